@@ -1,0 +1,130 @@
+#pragma once
+/// A validated rockfall scenario: plain structs with documented defaults, SI units.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "shapes/rocks.hpp"
+#include "shapes/slope.hpp"
+
+namespace rockfall::engine {
+
+using Vec3 = Eigen::Vector3d;
+
+/// Contact coefficients of one surface or rock material. A contact between two materials uses
+/// the arithmetic mean of their values (see README, "Contact model").
+struct Material {
+    /// Coulomb friction coefficient, in [0, 2].
+    double friction = 0.6;
+    /// Kinematic (Newton) coefficient of restitution, normal rebound / impact speed, in [0, 1].
+    double restitution = 0.3;
+    /// Rolling resistance coefficient (resisting torque = coefficient * r * normal force),
+    /// dimensionless, in [0, 1].
+    double rolling_resistance = 0.02;
+};
+
+/// Materials of the static surfaces.
+struct SurfaceMaterials {
+    Material slope;
+    Material bars{0.4, 0.3, 0.02};
+    Material side_walls{0.4, 0.3, 0.02};
+    /// Reaction wall (concrete). Restitution sets the compliant contact's damping.
+    Material wall{0.5, 0.3, 0.0};
+};
+
+/// Elastic constants of the rock and the wall for the compliant wall contact.
+struct WallContact {
+    /// Force law at the reaction wall.
+    enum class Model {
+        hertz,   ///< F = 4/3 E* sqrt(R) d^1.5 with Tsuji et al. (1992) damping from restitution
+        linear,  ///< F = k d + c d', c from restitution (critical damping ratio beta)
+    };
+    Model model = Model::hertz;
+    /// Young's modulus of the rock, Pa (> 0).
+    double rock_youngs_modulus = 30e9;
+    /// Poisson's ratio of the rock, in [0, 0.5).
+    double rock_poisson_ratio = 0.2;
+    /// Young's modulus of the wall facing, Pa (> 0).
+    double wall_youngs_modulus = 30e9;
+    /// Poisson's ratio of the wall, in [0, 0.5).
+    double wall_poisson_ratio = 0.2;
+    /// Linear model stiffness, N/m; 0 means Hertz-equivalent (matched to Hertz's peak force at
+    /// each hit's impact speed). Ignored by the Hertz model.
+    double linear_stiffness = 0.0;
+    /// Time steps per estimated contact duration near the wall, in [20, 1000].
+    int steps_per_contact = 40;
+};
+
+/// One rock: its shape, size and material.
+struct RockSpec {
+    /// Shape family.
+    shapes::RockKind kind = shapes::RockKind::sphere;
+    /// Nominal size: volume-equivalent diameter, m, in [0.01, 10].
+    double size = 0.2;
+    /// Density, kg/m3, in [500, 10000].
+    double density = 2600.0;
+    /// Contact coefficients of the rock.
+    Material material;
+};
+
+/// How and where a rock starts.
+struct Release {
+    /// Distance along the slope surface from the crown to the release point, m (>= 0).
+    double distance = 0.5;
+    /// Lateral position y, m, inside the slope width.
+    double lateral = 0.0;
+    /// Gap between the rock's lowest point and the surface, m (>= 0).
+    double height = 0.0;
+    /// Initial velocity in the world frame, m/s.
+    Vec3 velocity = Vec3::Zero();
+    /// Initial angular velocity in the world frame, rad/s.
+    Vec3 spin = Vec3::Zero();
+    /// Initial orientation as x-y-z Euler angles, degrees, applied in the slope's surface frame.
+    Vec3 orientation_deg = Vec3::Zero();
+    /// When true the orientation is drawn uniformly at random from the run's seed instead.
+    bool random_orientation = false;
+};
+
+/// A rock and its release.
+struct RockRelease {
+    RockSpec rock;
+    Release release;
+};
+
+/// Time stepping and stop rule.
+struct Numerics {
+    /// Coarse time step away from the wall, s, in [1e-5, 1e-2].
+    double time_step = 1e-3;
+    /// Simulated time limit, s (> 0).
+    double max_time = 30.0;
+    /// A rock is at rest when its speed stays below this, m/s (> 0) ...
+    double rest_speed = 0.02;
+    /// ... for this long, s (> 0).
+    double rest_duration = 0.5;
+    /// Solver iterations per step, in [1, 100].
+    int solver_iterations = 10;
+};
+
+/// Everything one simulation needs.
+struct Scenario {
+    /// Free-text name, echoed in outputs.
+    std::string name = "scenario";
+    /// Slope, bars, side walls and reaction wall.
+    shapes::SlopeSpec slope;
+    /// Surface materials.
+    SurfaceMaterials materials;
+    /// Compliant contact at the reaction wall.
+    WallContact wall_contact;
+    /// Rocks released together (at least one).
+    std::vector<RockRelease> rocks = {RockRelease{}};
+    /// Horizontal distances from the toe where stations record crossings, m (seed: 0 and 4).
+    std::vector<double> stations = {0.0, 4.0};
+    /// Stepping and stop rule.
+    Numerics numerics;
+    /// Gravitational acceleration, m/s2 (> 0).
+    double gravity = 9.81;
+};
+
+}  // namespace rockfall::engine

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package rockfall needs to build, test and run.
+# Idempotent; run as root. Uses apt only; nothing else is downloaded.
+set -euo pipefail
+
+packages=(
+    # toolchain
+    build-essential cmake ninja-build pkg-config git ccache
+    # physics, geometry, maths
+    libbullet-dev libeigen3-dev libqhull-dev libassimp-dev
+    # storage and command line
+    libsqlite3-dev sqlite3 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+    # tests
+    catch2
+)
+
+if [ "$(id -u)" -ne 0 ]; then
+    echo "install-deps.sh: must run as root (it calls apt-get install)" >&2
+    exit 1
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "install-deps.sh: all ${#packages[@]} packages already installed"
+    exit 0
+fi
+
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "install-deps.sh: installed ${missing[*]}"
