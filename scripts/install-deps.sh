@@ -10,14 +10,9 @@ packages=(
     libbullet-dev libeigen3-dev libqhull-dev libassimp-dev
     # storage and command line
     libsqlite3-dev sqlite3 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
-    # tests
-    catch2
+    # tests and format check
+    catch2 clang-format
 )
-
-if [ "$(id -u)" -ne 0 ]; then
-    echo "install-deps.sh: must run as root (it calls apt-get install)" >&2
-    exit 1
-fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -27,6 +22,11 @@ done
 if [ ${#missing[@]} -eq 0 ]; then
     echo "install-deps.sh: all ${#packages[@]} packages already installed"
     exit 0
+fi
+
+if [ "$(id -u)" -ne 0 ]; then
+    echo "install-deps.sh: must run as root to install: ${missing[*]}" >&2
+    exit 1
 fi
 
 export DEBIAN_FRONTEND=noninteractive

@@ -1,0 +1,16 @@
+#pragma once
+/// The subcommands of the `rockfall` program; each registers itself on the CLI11 app.
+
+#include <CLI/CLI.hpp>
+
+namespace rockfall::app {
+
+/// Exit code for bad input (files, values, command line).
+inline constexpr int exit_bad_input = 2;
+/// Exit code for a failure while running (I/O, numerics).
+inline constexpr int exit_failure = 1;
+
+/// `rockfall simulate SCENARIO`: one release with a readable summary or JSON.
+void register_simulate(CLI::App& app);
+
+}  // namespace rockfall::app

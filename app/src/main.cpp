@@ -1,0 +1,35 @@
+// The `rockfall` program: parses the command line and dispatches to a subcommand.
+
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/scenario_file.hpp"
+#include "commands.hpp"
+#include "shapes/polyhedron.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"rockfall: how far rocks and soil released from a slope travel, and how hard "
+                 "they hit a wall (Bullet rigid bodies, MPM soil flow, Monte Carlo risk)"};
+    app.set_version_flag("--version", std::string("rockfall ") + ROCKFALL_VERSION);
+    app.require_subcommand(1);
+    app.set_help_all_flag("--help-all", "Print help for every subcommand");
+    rockfall::app::register_simulate(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : rockfall::app::exit_bad_input;
+    } catch (const rockfall::app::ScenarioError& e) {
+        std::cerr << "rockfall: " << e.what() << '\n';
+        return rockfall::app::exit_bad_input;
+    } catch (const rockfall::shapes::GeometryError& e) {
+        std::cerr << "rockfall: " << e.what() << '\n';
+        return rockfall::app::exit_bad_input;
+    } catch (const std::exception& e) {
+        std::cerr << "rockfall: " << e.what() << '\n';
+        return rockfall::app::exit_failure;
+    }
+    return 0;
+}
