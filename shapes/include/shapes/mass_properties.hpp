@@ -1,9 +1,9 @@
 #pragma once
 /// Exact mass properties and shape measures of convex polyhedra.
 
-#include <Eigen/Core>
-
 #include "shapes/polyhedron.hpp"
+
+#include <Eigen/Core>
 
 namespace rockfall::shapes {
 

@@ -1,12 +1,12 @@
 #pragma once
 /// Convex polyhedra: the geometry of every rock, built from point clouds with Qhull.
 
+#include <Eigen/Core>
+
 #include <array>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace rockfall::shapes {
 
@@ -14,7 +14,7 @@ using Vec3 = Eigen::Vector3d;
 
 /// Bad geometry from user data (degenerate, non-finite or absurd); the message names the problem.
 class GeometryError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

@@ -1,10 +1,10 @@
 #pragma once
 /// Rock geometries: the seed paper's three shapes at a nominal size.
 
-#include <string_view>
-
 #include "shapes/mass_properties.hpp"
 #include "shapes/polyhedron.hpp"
+
+#include <string_view>
 
 namespace rockfall::shapes {
 
@@ -18,7 +18,8 @@ enum class RockKind {
 /// Lower-case name of a kind ("sphere", "massive", "planar").
 std::string_view to_string(RockKind kind);
 
-/// A rock in its body frame: centroid at the origin, principal axes along x, y, z.
+/// A rock in its body frame: centroid at the origin, principal axes along x, y, z with the
+/// principal moments ascending, so x is the long axis and z the short one.
 struct RockGeometry {
     /// Shape family.
     RockKind kind = RockKind::sphere;
@@ -41,11 +42,14 @@ struct RockGeometry {
 
 /// The seed's shapes at a nominal (volume-equivalent) diameter in m, within [1e-3, 100].
 /// Massive: a chamfered block with axis ratios 1 : 0.9 : 0.8. Planar: a chamfered slab with
-/// axis ratios 1 : 0.8 : 0.35. Deterministic: the same size gives the same hull.
+/// axis ratios 1 : 0.8 : 0.35. Both have each corner cut off at 0.2 of the shortest half-axis
+/// along its three edges. Deterministic: the same size gives the same hull. Throws
+/// GeometryError for a size outside the range.
 RockGeometry make_rock(RockKind kind, double nominal_size);
 
 /// Wraps any convex hull as a rock: moves it to its centroid, rotates it onto its principal
-/// axes and scales it to the given volume-equivalent diameter (unchanged when size <= 0).
+/// axes and scales it to the given volume-equivalent diameter (unchanged when size <= 0;
+/// otherwise within [1e-3, 100] m). Throws GeometryError for kind sphere (use make_rock).
 RockGeometry rock_from_hull(const ConvexPolyhedron& hull, RockKind kind, double nominal_size);
 
 }  // namespace rockfall::shapes

@@ -4,12 +4,12 @@
 /// Frame: x horizontal and downslope (x = 0 at the crown), y across the slope (y = 0 on the
 /// centre line), z up (z = 0 on the final run-out segment's surface level at its end).
 
-#include <optional>
-#include <vector>
+#include "shapes/polyhedron.hpp"
 
 #include <Eigen/Core>
 
-#include "shapes/polyhedron.hpp"
+#include <optional>
+#include <vector>
 
 namespace rockfall::shapes {
 
@@ -83,7 +83,7 @@ struct OrientedBox {
     Vec3 half_extents = Vec3::Ones();
     /// What the box is.
     SurfaceRole role = SurfaceRole::slope;
-    /// The profile segment it belongs to (slope and bars), or -1.
+    /// The profile segment it belongs to (slope, bars, side walls), or -1 (reaction wall).
     int segment = -1;
 };
 
@@ -93,7 +93,7 @@ double signed_distance(const OrientedBox& box, const Vec3& p, Vec3* normal = nul
 
 /// The slope built from a SlopeSpec: profile, static solids and queries on the surface.
 class Slope {
-public:
+  public:
     /// Builds the geometry; the spec must be valid (validated at load time).
     explicit Slope(const SlopeSpec& spec);
 
@@ -114,18 +114,21 @@ public:
     double end_x() const;
     /// Surface height z at horizontal position x, m (clamped to the ends of the profile).
     double surface_height(double x) const;
-    /// Upward unit normal of the surface at x (in the x-z plane).
+    /// Upward unit normal of the surface at x (in the x-z plane), of segment_at(x).
     Vec3 surface_normal(double x) const;
     /// Unit vector along the surface, pointing downslope, at x.
     Vec3 surface_tangent(double x) const;
-    /// Point on the surface (centre line) at distance s along the surface from the crown, m.
+    /// Point on the surface (centre line) at distance s along the surface from the crown, m
+    /// (s clamped to [0, total length]).
     Vec3 point_at_distance(double s) const;
-    /// Distance along the surface from the crown to the surface point below x, m.
+    /// Distance along the surface from the crown to the surface point below x, m (x clamped
+    /// to [0, end_x]).
     double distance_along_surface(double x) const;
-    /// Index of the segment under x.
+    /// Index of the segment under x (a kink belongs to the lower segment; 0 before the crown,
+    /// the last beyond the end).
     int segment_at(double x) const;
 
-private:
+  private:
     SlopeSpec spec_;
     std::vector<Eigen::Vector2d> profile_;
     std::vector<OrientedBox> solids_;
