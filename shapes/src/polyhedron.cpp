@@ -3,11 +3,13 @@
 #include <Eigen/Geometry>
 #include <libqhull_r/libqhull_r.h>
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <new>
 #include <sstream>
 #include <unordered_map>
 #include <utility>
@@ -19,6 +21,8 @@ namespace {
 // diagonal cubed) are treated as flat: Qhull can return a sliver of round-off thickness for
 // coplanar input instead of failing.
 constexpr double kMinRelativeVolume = 1e-12;
+// Triangles lower than this fraction of their longest edge are slivers (see sliver_vertices).
+constexpr double kSliverRatio = 1e-9;
 
 std::string describe(const Vec3& p) {
     std::ostringstream out;
@@ -43,20 +47,20 @@ void check_input(const std::vector<Vec3>& points) {
 // in-memory stream keeps its message for the exception instead of printing to stderr.
 class MessageStream {
   public:
-    MessageStream() : file_(open_memstream(&buffer_, &size_)) {}
+    MessageStream() : file_(open_memstream(&buffer_, &size_)) {
+        // open_memstream fails only without memory; Qhull would then fall back to stderr.
+        if (file_ == nullptr) {
+            throw std::bad_alloc();
+        }
+    }
     MessageStream(const MessageStream&) = delete;
     MessageStream& operator=(const MessageStream&) = delete;
     ~MessageStream() {
-        if (file_ != nullptr) {
-            std::fclose(file_);
-        }
+        std::fclose(file_);
         std::free(buffer_);
     }
     FILE* file() const { return file_; }
     std::string text() const {
-        if (file_ == nullptr) {
-            return {};
-        }
         std::fflush(file_);
         return std::string(buffer_, size_);
     }
@@ -142,6 +146,59 @@ double hull_volume(const ConvexPolyhedron& poly) {
     return six_volume / 6.0;
 }
 
+// One Qhull run on points already checked to be finite and not all coincident.
+ConvexPolyhedron qhull_hull(const std::vector<Vec3>& points) {
+    if (points.size() < 4) {
+        throw GeometryError("convex hull: points span no volume (collinear or coplanar)");
+    }
+    std::vector<coordT> coordinates;
+    coordinates.reserve(3 * points.size());
+    for (const Vec3& p : points) {
+        coordinates.insert(coordinates.end(), {p.x(), p.y(), p.z()});
+    }
+    MessageStream messages;
+    QhullRun run(messages.file());
+    // "Qt": triangulated output, so every facet is a triangle.
+    char options[] = "qhull Qt";
+    const int status = qh_new_qhull(run.get(), 3, static_cast<int>(points.size()),
+                                    coordinates.data(), False, options, nullptr, messages.file());
+    if (status != 0) {
+        throw GeometryError("convex hull of " + std::to_string(points.size()) +
+                            " points failed (collinear or coplanar points?): Qhull: " +
+                            first_line(messages.text()));
+    }
+    return extract(run.get());
+}
+
+// Vertices that make a sliver triangle: the vertex opposite the longest edge of a triangle
+// whose height over that edge is below kSliverRatio of its length. Qhull's "Qt" leaves such
+// triangles where a vertex lies (nearly) on a ridge of merged facets; their cross-product
+// normals are round-off, and the vertex is no extreme point, so dropping it changes the hull
+// by less than that height.
+std::vector<bool> sliver_vertices(const ConvexPolyhedron& poly) {
+    std::vector<bool> sliver(poly.vertices.size(), false);
+    for (const auto& tri : poly.triangles) {
+        std::array<Vec3, 3> p;
+        for (std::size_t k = 0; k < 3; ++k) {
+            p[k] = poly.vertices[static_cast<std::size_t>(tri[k])];
+        }
+        std::size_t opposite = 0;
+        double longest = 0.0;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double length = (p[(k + 2) % 3] - p[(k + 1) % 3]).norm();
+            if (length > longest) {
+                longest = length;
+                opposite = k;
+            }
+        }
+        const double twice_area = (p[1] - p[0]).cross(p[2] - p[0]).norm();
+        if (twice_area <= kSliverRatio * longest * longest) {
+            sliver[static_cast<std::size_t>(tri[opposite])] = true;
+        }
+    }
+    return sliver;
+}
+
 }  // namespace
 
 ConvexPolyhedron convex_hull(const std::vector<Vec3>& points) {
@@ -157,26 +214,21 @@ ConvexPolyhedron convex_hull(const std::vector<Vec3>& points) {
                             " points coincide at " + describe(points.front()) + " m");
     }
 
-    std::vector<coordT> coordinates;
-    coordinates.reserve(3 * points.size());
-    for (const Vec3& p : points) {
-        coordinates.insert(coordinates.end(), {p.x(), p.y(), p.z()});
+    ConvexPolyhedron poly = qhull_hull(points);
+    // Each pass drops at least one vertex, so this ends.
+    for (std::vector<bool> sliver = sliver_vertices(poly);
+         std::find(sliver.begin(), sliver.end(), true) != sliver.end();
+         sliver = sliver_vertices(poly)) {
+        std::vector<Vec3> kept;
+        for (std::size_t i = 0; i < poly.vertices.size(); ++i) {
+            if (!sliver[i]) {
+                kept.push_back(poly.vertices[i]);
+            }
+        }
+        poly = qhull_hull(kept);
     }
 
-    MessageStream messages;
-    QhullRun run(messages.file());
-    // "Qt": triangulated output, so every facet is a triangle.
-    char options[] = "qhull Qt";
-    const int status = qh_new_qhull(run.get(), 3, static_cast<int>(points.size()),
-                                    coordinates.data(), False, options, nullptr, messages.file());
-    if (status != 0) {
-        throw GeometryError("convex hull of " + std::to_string(points.size()) +
-                            " points failed (collinear or coplanar points?): Qhull: " +
-                            first_line(messages.text()));
-    }
-    ConvexPolyhedron poly = extract(run.get());
-
-    if (poly.vertices.size() < 4 || poly.triangles.size() < 4) {
+    if (poly.triangles.size() < 4) {
         throw GeometryError("convex hull: points span no volume (collinear or coplanar)");
     }
     const double volume = hull_volume(poly);

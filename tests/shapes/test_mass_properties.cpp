@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -148,6 +149,30 @@ TEST_CASE("hull of a random cloud is closed, outward and contains every point", 
             REQUIRE(n.dot(p - pa) <= 1e-9 * n.norm());
         }
     }
+}
+
+TEST_CASE("nearly coplanar points give no sliver triangles", "[shapes]") {
+    // Points on the faces and edges of a 2 m cube, jittered by 1e-11 m: Qhull's triangulation
+    // of its merged facets would otherwise contain triangles of round-off height.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<Vec3> points = box_corners(-Vec3::Ones(), Vec3::Ones());
+    for (int i = 0; i < 300; ++i) {
+        Vec3 p(u(rng), u(rng), u(rng));
+        p[i % 3] = ((i / 3) % 2 ? 1.0 : -1.0) + 1e-11 * u(rng);
+        points.push_back(p);
+        points.emplace_back(u(rng), 1.0 + 1e-11 * u(rng), 1.0 + 1e-11 * u(rng));
+    }
+    const ConvexPolyhedron hull = rockfall::shapes::convex_hull(points);
+    check_closed_and_outward(hull);
+    for (const auto& [a, b, c] : hull.triangles) {
+        const Vec3& pa = hull.vertices[static_cast<std::size_t>(a)];
+        const Vec3& pb = hull.vertices[static_cast<std::size_t>(b)];
+        const Vec3& pc = hull.vertices[static_cast<std::size_t>(c)];
+        const double longest = std::max({(pb - pa).norm(), (pc - pb).norm(), (pa - pc).norm()});
+        CHECK((pb - pa).cross(pc - pa).norm() > 1e-9 * longest * longest);
+    }
+    CHECK_THAT(rockfall::shapes::mass_properties(hull).volume, WithinRel(8.0, 1e-9));
 }
 
 TEST_CASE("Wadell sphericity of the Platonic solids", "[shapes][verification]") {

@@ -28,6 +28,8 @@ struct ConvexPolyhedron {
 
 /// Convex hull of a point cloud, computed by Qhull. Throws GeometryError for fewer than four
 /// points, non-finite coordinates, or points that are all collinear or coplanar (zero volume).
+/// Vertices within 1e-9 (relative) of a hull edge are dropped, so that every triangle has a
+/// well-defined normal; nothing is printed.
 ConvexPolyhedron convex_hull(const std::vector<Vec3>& points);
 
 /// The same polyhedron translated by `offset` and then rotated by `rotation` (p' = R (p + t)).
