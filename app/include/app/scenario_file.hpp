@@ -1,5 +1,18 @@
 #pragma once
 /// Scenario files: TOML, SI units, every value defaulted and validated at load time.
+///
+/// Layout (README, "Scenario files", lists every key with unit, default and range): top-level
+/// `name`, `extends`, `gravity`, `stations`; tables `[slope]` (with `[[slope.segments]]`,
+/// `[slope.side_walls]`, `[slope.bars]`, `[slope.wall]`), `[materials.slope|bars|side_walls|
+/// wall]`, `[wall_contact]`, `[[rocks]]` (with `[rocks.material]`, `[rocks.release]`) and
+/// `[numerics]`. Keys are the field names of engine::Scenario and shapes::SlopeSpec; a missing
+/// key keeps the struct's default. Indices in key paths and `slope.bars.segments` are 0-based.
+///
+/// `extends = "base.toml"` (relative to the file) loads the base first and overrides it key by
+/// key: tables merge recursively, every other value (arrays and arrays of tables included)
+/// replaces the base's. Bases may extend further bases; cycles are errors.
+
+#include "engine/scenario.hpp"
 
 #include <filesystem>
 #include <stdexcept>
@@ -7,48 +20,62 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/scenario.hpp"
-
 namespace rockfall::app {
 
 /// One problem found in a scenario file.
 struct ScenarioProblem {
-    /// File the problem is in.
+    /// File the problem is in; empty for a scenario built in code.
     std::string file;
-    /// 1-based line, or 0 when the key is missing.
+    /// 1-based line, or 0 when unknown (e.g. a missing file).
     int line = 0;
-    /// Dotted key path, e.g. "rocks[2].density".
+    /// Dotted key path, e.g. "rocks[2].density"; empty for file-level problems.
     std::string key;
-    /// What is wrong, with the value, its unit and the allowed range.
+    /// What is wrong, with the value, its unit and the allowed range, e.g.
+    /// "-2500 kg/m3: must be in [500, 10000]".
     std::string message;
+    /// 1-based column for syntax errors, otherwise 0.
+    int column = 0;
 };
 
+/// One line `key = message (file:line)`, or `message (file:line:column)` without a key.
+std::string to_string(const ScenarioProblem& problem);
+
 /// Every problem found in a scenario file; what() lists them one per line as
-/// `key = value unit: must be ... (file:line)`.
+/// `key = value unit: must be ... (file:line)`, in file and line order.
 class ScenarioError : public std::runtime_error {
-public:
+  public:
     explicit ScenarioError(std::vector<ScenarioProblem> problems);
     const std::vector<ScenarioProblem>& problems() const { return problems_; }
 
-private:
+  private:
     std::vector<ScenarioProblem> problems_;
 };
 
 /// A loaded scenario and the text it came from (kept for results databases).
 struct ScenarioFile {
     engine::Scenario scenario;
-    /// The file's text (after resolving `extends`).
+    /// The file's text as written; for a file with `extends`, the resolved scenario with
+    /// every key written out (format_scenario), so that the text stands alone.
     std::string text;
     /// Path it was read from.
     std::filesystem::path path;
 };
 
-/// Reads, parses and validates a scenario file; throws ScenarioError listing all problems.
+/// Reads, parses and validates a scenario file; throws ScenarioError listing all problems
+/// (a missing or unreadable file and TOML syntax errors are single problems).
 ScenarioFile load_scenario(const std::filesystem::path& file);
 
 /// Parses and validates scenario text; `source` names it in messages; `base_dir` resolves
-/// `extends` paths.
+/// `extends` paths. Throws ScenarioError.
 engine::Scenario parse_scenario(std::string_view text, const std::string& source,
                                 const std::filesystem::path& base_dir = ".");
+
+/// Applies the file's range and cross-field rules to a scenario built in code; throws
+/// ScenarioError (problems have key paths but no file).
+void validate_scenario(const engine::Scenario& scenario);
+
+/// The scenario as a complete TOML document, every key written out; parse_scenario reads it
+/// back to an identical scenario (numbers are written in their shortest exact form).
+std::string format_scenario(const engine::Scenario& scenario);
 
 }  // namespace rockfall::app
