@@ -44,7 +44,9 @@ std::string to_string(const ScenarioProblem& problem);
 /// `key = value unit: must be ... (file:line)`, in file and line order.
 class ScenarioError : public std::runtime_error {
   public:
+    /// Sorts the problems by file and line (problems without a line last).
     explicit ScenarioError(std::vector<ScenarioProblem> problems);
+    /// The problems, in the order what() lists them.
     const std::vector<ScenarioProblem>& problems() const { return problems_; }
 
   private:
@@ -53,6 +55,7 @@ class ScenarioError : public std::runtime_error {
 
 /// A loaded scenario and the text it came from (kept for results databases).
 struct ScenarioFile {
+    /// The validated scenario.
     engine::Scenario scenario;
     /// The file's text as written; for a file with `extends`, the resolved scenario with
     /// every key written out (format_scenario), so that the text stands alone.

@@ -9,7 +9,9 @@ namespace rockfall::risk {
 
 /// A closed interval [lower, upper].
 struct Interval {
+    /// Lower bound, in the unit of the estimate.
     double lower = 0.0;
+    /// Upper bound (>= lower).
     double upper = 0.0;
 };
 
