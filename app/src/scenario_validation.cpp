@@ -211,8 +211,8 @@ void check_bars(Checker& c, const shapes::AngleBars& bars, std::size_t segment_c
             c.fail(path, std::to_string(index),
                    "must be a segment index in [0, " + std::to_string(segment_count) +
                        ") (0 is the top segment)");
-        } else if (std::find(bars.segments.begin(), bars.segments.begin() + static_cast<long>(i),
-                             index) != bars.segments.begin() + static_cast<long>(i)) {
+        } else if (std::count(bars.segments.begin(),
+                              bars.segments.begin() + static_cast<std::ptrdiff_t>(i), index) > 0) {
             c.fail(path, std::to_string(index), "is listed twice");
         }
     }
@@ -233,13 +233,14 @@ bool check_slope(Checker& c, const shapes::SlopeSpec& slope) {
     check_bars(c, slope.bars, slope.segments.size());
     const bool wall_ok = c.check_fields(slope.wall, "slope.wall", wall_fields);
     if (profile_ok && wall_ok && slope.wall.enabled) {
-        const double room = profile_of(slope).runout_horizontal - slope.wall.thickness;
+        const double runout = profile_of(slope).runout_horizontal;
+        const double room = runout - slope.wall.thickness;
         if (slope.wall.distance_from_toe > room) {
             c.fail(
                 "slope.wall.distance_from_toe", format_number(slope.wall.distance_from_toe) + " m",
                 "must be in (0, " + format_number(room) + "] so that the wall (" +
                     format_number(slope.wall.thickness) + " m thick) stands on the last segment (" +
-                    format_number(profile_of(slope).runout_horizontal) + " m long horizontally)");
+                    format_number(runout) + " m long horizontally)");
         }
     }
     return profile_ok;
@@ -260,7 +261,7 @@ void check_rock(Checker& c, const engine::Scenario& s, std::size_t index, bool p
                "must be in [0, " + format_number(profile.inclined_length) +
                    ") so that the rock starts on the inclined part, above the toe");
     }
-    if (size_ok && s.slope.width > 0.0) {
+    if (size_ok) {
         // The bounding sphere keeps every orientation, random ones included, off the side walls.
         const double radius = shapes::make_rock(rock.rock.kind, rock.rock.size).bounding_radius;
         const double half_room = 0.5 * s.slope.width - radius;
@@ -281,8 +282,8 @@ void check_rock(Checker& c, const engine::Scenario& s, std::size_t index, bool p
         0.5 * (rock.rock.material.restitution + s.materials.wall.restitution);
     if (material_ok && s.slope.wall.enabled && mean_restitution <= 0.0) {
         c.fail(path + ".material.restitution", format_number(rock.rock.material.restitution),
-               "must be > 0 when materials.wall.restitution is 0: the wall contact needs a "
-               "mean restitution > 0");
+               "must be > 0 when materials.wall.restitution is 0 (the wall contact's damping "
+               "needs a mean restitution > 0)");
     }
 }
 

@@ -395,3 +395,28 @@ TEST_CASE("scenarios built in code are held to the same rules", "[app][scenario]
               "rocks = []: must have at least one rock");
     }
 }
+
+TEST_CASE("angle bars and rock size must fit the slope", "[app][scenario][errors]") {
+    const ScenarioError error = parse_error(R"(
+[slope]
+width = 0.3
+
+[slope.bars]
+leg = 0.05
+thickness = 0.06
+spacing = 0.04
+segments = [1, 1]
+
+[[rocks]]
+size = 0.4
+)");
+    CHECK(error.problems().size() == 4);
+    CHECK_THAT(problem_for(error, "slope.bars.thickness").message,
+               Contains("0.06 m: must be < the leg (0.05 m)"));
+    CHECK_THAT(problem_for(error, "slope.bars.spacing").message,
+               Contains("0.04 m: must be > the leg (0.05 m)"));
+    CHECK(problem_for(error, "slope.bars.segments[1]").message == "1: is listed twice");
+    CHECK_THAT(problem_for(error, "rocks[0].size").message,
+               Contains("0.4 m: a sphere this size (bounding radius 0.2 m) is wider than the "
+                        "slope (0.3 m)"));
+}
