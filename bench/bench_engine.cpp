@@ -122,9 +122,11 @@ void print_tally(const std::string& label, const Tally& t) {
               << "  trajectories:          " << t.trajectories << "\n"
               << "  wall time:             " << t.wall << " s (thread CPU " << t.cpu << " s)\n"
               << "  trajectories/s:        " << t.rate() << " (per CPU s: " << t.cpu_rate() << ")\n"
-              << "  mean simulated time:   " << t.simulated / t.trajectories << " s\n"
+              << "  mean simulated time:   " << t.simulated / t.trajectories << " s ("
+              << t.simulated / t.wall << " simulated s per wall s)\n"
               << "  steps:                 " << t.steps << " ("
-              << static_cast<double>(t.steps) / t.wall << " steps/s)\n"
+              << 1e6 * t.wall / static_cast<double>(t.steps) << " us wall, "
+              << 1e6 * t.cpu / static_cast<double>(t.steps) << " us CPU per step)\n"
               << "  reach past toe:        median " << median(t.reaches) << " m\n"
               << "  stop reasons:         ";
     for (const auto& [reason, count] : t.stops) {
@@ -143,93 +145,128 @@ struct Options {
         std::filesystem::path(ROCKFALL_SAMPLES_DIR) / "seed_slope.toml";
     int rocks = 200;
     int fine_rocks = 20;
-    double impact_speed = 8.0;
+    // m/s; 0: the median normal speed of the first wall hits in (a).
+    double impact_speed = 0.0;
 };
 
-int run(const Options& options) {
-    print_machine();
-    const engine::Scenario base = app::load_scenario(options.scenario).scenario;
-    std::cout << "scenario:   " << options.scenario.string() << "\n"
+// Impact speed for (c) when (a) saw no wall hit, m/s (the brief's typical 0.2 m rock impact).
+constexpr double kFallbackImpactSpeed = 8.0;
+
+struct Results {
+    Tally engine, bare, fine;
+    Tally engine_subset;  // (a) on the rocks of (c)
+    std::int64_t coarse_steps = 0, fine_steps = 0, wall_hits = 0;
+    std::vector<double> first_hit_speeds;   // m/s, normal impact speed of each rock's first hit
+    double impact_speed = 0.0;              // m/s, for (c)
+    double fine_min = 0.0, fine_max = 0.0;  // s, range of the fine steps of (c)
+    std::string load_start, load_after_ab, load_end;
+};
+
+void run_engine(const engine::Scenario& scenario, std::uint64_t seed, bool in_subset, Results& r) {
+    const Stopwatch watch;
+    const engine::Outcome outcome = engine::simulate(scenario, seed);
+    const engine::RockOutcome& rock = outcome.rocks.front();
+    r.engine.add(watch, outcome.simulated_time, outcome.coarse_steps + outcome.fine_steps,
+                 rock.reach, rock.stop);
+    if (in_subset) {
+        r.engine_subset.add(watch, outcome.simulated_time, 0, rock.reach, rock.stop);
+    }
+    r.coarse_steps += outcome.coarse_steps;
+    r.fine_steps += outcome.fine_steps;
+    r.wall_hits += static_cast<std::int64_t>(rock.wall_hits.size());
+    if (!rock.wall_hits.empty()) {
+        r.first_hit_speeds.push_back(rock.wall_hits.front().normal_speed);
+    }
+}
+
+void run_bare(const engine::Scenario& scenario, std::uint64_t seed, double dt, Tally& tally) {
+    const Stopwatch watch;
+    const bench::BareRun bare = bench::run_bare_bullet(scenario, seed, dt);
+    tally.add(watch, bare.stop_time, bare.steps, bare.reach, bare.stop);
+}
+
+// (a) and (b) alternate rock by rock, and which goes first alternates too, so that a change
+// in the machine's load hits both alike.
+void measure_coarse(const engine::Scenario& base, const Options& options, Results& r) {
+    for (int i = 1; i <= options.rocks; ++i) {
+        const auto seed = static_cast<std::uint64_t>(i);
+        const engine::Scenario scenario = risk::random_rock_scenario(base, seed);
+        const bool in_subset = i <= options.fine_rocks;
+        if (i % 2 == 1) {
+            run_engine(scenario, seed, in_subset, r);
+            run_bare(scenario, seed, scenario.numerics.time_step, r.bare);
+        } else {
+            run_bare(scenario, seed, scenario.numerics.time_step, r.bare);
+            run_engine(scenario, seed, in_subset, r);
+        }
+        if (i % 50 == 0) {
+            std::cerr << "  (a), (b): " << i << " rocks done\n";
+        }
+    }
+}
+
+// (c): the engine's fine step for each rock (fine_time_step) at one impact speed.
+void measure_fine(const engine::Scenario& base, const Options& options, Results& r) {
+    r.impact_speed = options.impact_speed > 0.0   ? options.impact_speed
+                     : r.first_hit_speeds.empty() ? kFallbackImpactSpeed
+                                                  : median(r.first_hit_speeds);
+    for (int i = 1; i <= options.fine_rocks; ++i) {
+        const auto seed = static_cast<std::uint64_t>(i);
+        const engine::Scenario scenario = risk::random_rock_scenario(base, seed);
+        const double dt = bench::fine_time_step(scenario, r.impact_speed);
+        r.fine_min = i == 1 ? dt : std::min(r.fine_min, dt);
+        r.fine_max = std::max(r.fine_max, dt);
+        run_bare(scenario, seed, dt, r.fine);
+        std::cerr << "  (c): rock " << i << " of " << options.fine_rocks << ", dt " << dt << " s\n";
+    }
+}
+
+void print_report(const engine::Scenario& base, const Options& options, const Results& r) {
+    std::cout << std::setprecision(4) << "\n"
+              << "scenario:   " << options.scenario.string() << "\n"
               << "rocks:      N = " << options.rocks << " (seeds 1.." << options.rocks
               << "), fine-step subset M = " << options.fine_rocks << " (seeds 1.."
               << options.fine_rocks << ")\n"
               << "coarse step " << base.numerics.time_step << " s\n"
-              << "load average at start: " << load_average() << "\n"
-              << std::flush;
-
-    Tally engine_tally, bare_tally, fine_tally, engine_subset;
-    std::int64_t coarse_steps = 0, fine_steps = 0;
-    const auto run_engine = [&](const engine::Scenario& scenario, std::uint64_t seed) {
-        const Stopwatch watch;
-        const engine::Outcome outcome = engine::simulate(scenario, seed);
-        engine_tally.add(watch, outcome.simulated_time, outcome.coarse_steps + outcome.fine_steps,
-                         outcome.rocks.front().reach, outcome.rocks.front().stop);
-        if (seed <= static_cast<std::uint64_t>(options.fine_rocks)) {
-            engine_subset.add(watch, outcome.simulated_time, 0, 0.0, outcome.rocks.front().stop);
-        }
-        coarse_steps += outcome.coarse_steps;
-        fine_steps += outcome.fine_steps;
-    };
-    const auto run_bare = [&](const engine::Scenario& scenario, std::uint64_t seed) {
-        const Stopwatch watch;
-        const bench::BareRun bare =
-            bench::run_bare_bullet(scenario, seed, scenario.numerics.time_step);
-        bare_tally.add(watch, bare.stop_time, bare.steps, bare.reach, bare.stop);
-    };
-    // (a) and (b) alternate rock by rock, and which goes first alternates too, so that a
-    // change in the machine's load hits both alike.
-    for (int i = 1; i <= options.rocks; ++i) {
-        const auto seed = static_cast<std::uint64_t>(i);
-        const engine::Scenario scenario = risk::random_rock_scenario(base, seed);
-        if (i % 2 == 1) {
-            run_engine(scenario, seed);
-            run_bare(scenario, seed);
-        } else {
-            run_bare(scenario, seed);
-            run_engine(scenario, seed);
-        }
-        if (i % 50 == 0) {
-            std::cerr << "  " << i << " rocks done\n";
-        }
+              << "load average at start:       " << r.load_start << "\n"
+              << "load average after (a), (b): " << r.load_after_ab << "\n"
+              << "load average at the end:     " << r.load_end << "\n\n";
+    print_tally("(a) engine, default settings", r.engine);
+    std::cout << "  coarse steps:          " << r.coarse_steps << "\n"
+              << "  fine steps:            " << r.fine_steps << "\n"
+              << "  wall hits:             " << r.wall_hits << " by " << r.first_hit_speeds.size()
+              << " rocks; median first-hit normal speed " << median(r.first_hit_speeds) << " m/s\n";
+    print_tally("(b) bare Bullet, default world, coarse step", r.bare);
+    if (r.fine.trajectories > 0) {
+        print_tally("(c) bare Bullet, default world, fine step everywhere", r.fine);
+        std::cout << "  fine step:             " << r.fine_min << " .. " << r.fine_max
+                  << " s (engine::WallContactLaw contact duration at " << r.impact_speed
+                  << " m/s over steps_per_contact, per rock)\n"
+                  << "  (a) on the same rocks: " << r.engine_subset.rate()
+                  << " trajectories/s, mean simulated time "
+                  << r.engine_subset.simulated / r.engine_subset.trajectories << " s\n";
     }
-    const std::string load_after_ab = load_average();
-
-    double fine_min = 1.0, fine_max = 0.0;
-    for (int i = 1; i <= options.fine_rocks; ++i) {
-        const auto seed = static_cast<std::uint64_t>(i);
-        const engine::Scenario scenario = risk::random_rock_scenario(base, seed);
-        const double dt = bench::fine_time_step(scenario, options.impact_speed);
-        fine_min = std::min(fine_min, dt);
-        fine_max = std::max(fine_max, dt);
-        const Stopwatch watch;
-        const bench::BareRun bare = bench::run_bare_bullet(scenario, seed, dt);
-        fine_tally.add(watch, bare.stop_time, bare.steps, bare.reach, bare.stop);
-        std::cerr << "  fine rock " << i << ": dt " << dt << " s, " << bare.steps << " steps, "
-                  << watch.wall() << " s\n";
-    }
-
-    std::cout << std::setprecision(4) << "\n";
-    print_tally("(a) engine, default settings", engine_tally);
-    std::cout << "  coarse steps:          " << coarse_steps << "\n"
-              << "  fine steps:            " << fine_steps << "\n";
-    print_tally("(b) bare Bullet, default world, coarse step", bare_tally);
-    print_tally("(c) bare Bullet, default world, fine step everywhere", fine_tally);
-    std::cout << "  fine step:             " << fine_min << " .. " << fine_max
-              << " s (WallContactLaw contact duration at " << options.impact_speed
-              << " m/s / steps_per_contact, per rock)\n"
-              << "  (a) on the same " << engine_subset.trajectories
-              << " rocks: " << engine_subset.rate() << " trajectories/s\n";
-    std::cout << "load average after (a), (b): " << load_after_ab << "\n"
-              << "load average at the end:     " << load_average() << "\n"
-              << "ratios\n";
-    print_ratio("a/b", engine_tally.rate() / bare_tally.rate(),
-                engine_tally.cpu_rate() / bare_tally.cpu_rate(), 1.0);
-    if (fine_tally.trajectories > 0) {
-        print_ratio("a/c (same rocks)", engine_subset.rate() / fine_tally.rate(),
-                    engine_subset.cpu_rate() / fine_tally.cpu_rate(), 100.0);
-        std::cout << "  a/c (a over all N rocks) = " << engine_tally.rate() / fine_tally.rate()
+    std::cout << "ratios (trajectories/s)\n";
+    print_ratio("a/b", r.engine.rate() / r.bare.rate(), r.engine.cpu_rate() / r.bare.cpu_rate(),
+                1.0);
+    if (r.fine.trajectories > 0) {
+        print_ratio("a/c (same rocks)", r.engine_subset.rate() / r.fine.rate(),
+                    r.engine_subset.cpu_rate() / r.fine.cpu_rate(), 100.0);
+        std::cout << "  a/c with (a) over all N rocks = " << r.engine.rate() / r.fine.rate()
                   << "\n";
     }
+}
+
+int run(const Options& options) {
+    print_machine();
+    const engine::Scenario base = app::load_scenario(options.scenario).scenario;
+    Results results;
+    results.load_start = load_average();
+    measure_coarse(base, options, results);
+    results.load_after_ab = load_average();
+    measure_fine(base, options, results);
+    results.load_end = load_average();
+    print_report(base, options, results);
     return 0;
 }
 
@@ -249,8 +286,9 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 1000000))
         ->capture_default_str();
     cli.add_option("--impact-speed", options.impact_speed,
-                   "Impact speed setting the fine step of (c), m/s")
-        ->check(CLI::PositiveNumber)
+                   "Impact speed setting the fine step of (c), m/s; 0: the median first-hit "
+                   "normal speed of (a) (8 m/s if no rock hits the wall)")
+        ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     CLI11_PARSE(cli, argc, argv);
     if (options.fine_rocks > options.rocks) {
