@@ -346,7 +346,6 @@ void Solver<Dim>::update_grid(double dt) {
         w.slot_impulse.resize(active.size());
     }
     const Vec<Dim> gravity = from_scene<Dim>(settings_.gravity);
-    const double damping = 1.0 / (1.0 + settings_.damping * dt);
 #pragma omp parallel for num_threads(threads_) schedule(static)
     for (int i = 0; i < count; ++i) {
         const auto slot = static_cast<std::size_t>(active[static_cast<std::size_t>(i)]);
@@ -362,7 +361,7 @@ void Solver<Dim>::update_grid(double dt) {
                 continue;
             }
             const IVec<Dim> index = first_node + detail::block_local_coords<Dim>(j);
-            Vec<Dim> v = (node.template head<Dim>() / m + dt * gravity) * damping;
+            Vec<Dim> v = node.template head<Dim>() / m + dt * gravity;
             detail::apply_domain_faces<Dim>(index, grid.nodes, v);
             const std::int32_t rule =
                 grid.rule_of_node[slot * kBlockNodes<Dim> + static_cast<std::size_t>(j)];
@@ -410,6 +409,9 @@ void Solver<Dim>::grid_to_particles(double dt) {
     Workspace& w = *work_;
     const detail::KernelFrame<Dim> frame{grid.origin, grid.h};
     const int count = static_cast<int>(w.blocks.size());
+    // Damping acts on the particles after the transfer, so the boundary impulses of a body at
+    // rest are its full reactions.
+    const double damping = 1.0 / (1.0 + settings_.damping * dt);
     double max_speed_squared = 0.0;
 #pragma omp parallel for num_threads(threads_) schedule(dynamic, 1) reduction(max \
                                                                               : max_speed_squared)
@@ -423,6 +425,7 @@ void Solver<Dim>::grid_to_particles(double dt) {
             detail::gather_particle<Dim>(frame, first_node, local, particles_.position[p],
                                          particles_.velocity[p], particles_.affine[p]);
             particles_.position[p] += dt * particles_.velocity[p];
+            particles_.velocity[p] *= damping;
             max_speed_squared = std::max(max_speed_squared, particles_.velocity[p].squaredNorm());
         }
     }

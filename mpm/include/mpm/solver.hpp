@@ -9,9 +9,10 @@
 ///   2. particles to grid: mass and APIC momentum, plus the internal force of the particle
 ///      stress, f_i = -sum_p V_p sigma_p D^-1 (x_i - x_p) w_ip with D^-1 = 4/h^2 I (Hu et al.
 ///      2018, eq. 18);
-///   3. grid update: v_i = p_i / m_i + dt g, damping, then the boundaries in group order,
+///   3. grid update: v_i = p_i / m_i + dt g, then the boundaries in group order,
 ///      recording the momentum each group removes;
-///   4. grid to particles: v_p = sum w v_i, C_p = D^-1 sum w v_i (x_i - x_p)^T, x_p += dt v_p;
+///   4. grid to particles: v_p = sum w v_i, C_p = D^-1 sum w v_i (x_i - x_p)^T, x_p += dt v_p
+///      (optional damping of v_p);
 ///   5. stress update: sigma co-rotated with the spin W = skew(C_p) (Jaumann rate), then the
 ///      constitutive model with the strain increment sym(C_p) dt; V_p *= det(I + dt C_p).
 ///
@@ -46,8 +47,9 @@ struct SolverSettings {
     double cfl = 0.3;
     /// Upper bound of stable_time_step(), s (> 0).
     double max_time_step = 1e-2;
-    /// Mass-proportional viscous damping of grid velocities, 1/s (>= 0; 0 = none):
-    /// v <- v / (1 + damping dt). For quasi-static tests only.
+    /// Viscous damping of the particle velocities after each transfer, 1/s (>= 0; 0 = none):
+    /// v_p <- v_p / (1 + damping dt) after the position update. For quasi-static set-ups only; it
+    /// does not alter the boundary reactions of a body at rest.
     double damping = 0.0;
     /// Worker threads (>= 0; 0 = OpenMP's default).
     int threads = 0;
