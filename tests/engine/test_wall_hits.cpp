@@ -170,3 +170,50 @@ TEST_CASE("wall peak force converges under halving the fine step", "[verificatio
         CHECK(fine.history.size() >= 2 * coarse.history.size() - 2);
     }
 }
+
+TEST_CASE("wall friction stops the slip of a rolling sphere within Coulomb's limit",
+          "[verification][wall]") {
+    // Rolling at 8 m/s, the contact point slides down the wall at v r w = 8 m/s. Stopping that
+    // slip takes the impulse m_t 8 with m_t = 2 m / 7 (a sphere's effective mass for sliding at
+    // its surface), less than mu times the normal impulse, so the contact sticks and the rock
+    // leaves with m_t 8 / m = 2.29 m/s upwards.
+    Scenario scenario = wall_scenario(WallContact{}, 0.3);
+    scenario.materials.slope.friction = 0.6;
+    scenario.materials.wall.friction = 0.5;
+    scenario.rocks[0].rock.material.friction = 0.6;
+    scenario.rocks[0].release.spin = Vec3(0.0, kSpeed / kRadius, 0.0);
+    const WallHit hit = single_hit(scenario);
+    const double mu = 0.55;
+    const double tangential_mass = 2.0 / 7.0 * kMass;
+    CAPTURE(hit.tangential_impulse.transpose(), hit.normal_impulse, hit.velocity_after.transpose(),
+            hit.angular_velocity_after.transpose());
+    // On the wall the friction points down.
+    CHECK(hit.tangential_impulse.z() < 0.0);
+    CHECK(hit.tangential_impulse.norm() <= mu * hit.normal_impulse);
+    CHECK_THAT(hit.tangential_impulse.norm(), WithinRel(tangential_mass * kSpeed, 0.02));
+    CHECK_THAT(hit.velocity_after.z(), WithinRel(tangential_mass * kSpeed / kMass, 0.02));
+    const double slip_after = hit.velocity_after.z() - kRadius * hit.angular_velocity_after.y();
+    CHECK_THAT(slip_after, WithinAbs(0.0, 0.02 * kSpeed));
+    for (const ForceSample& sample : hit.history) {
+        CHECK(sample.tangential <= mu * sample.normal * (1.0 + 1e-12));
+    }
+}
+
+TEST_CASE("a massive rock's wall impulse equals its momentum change", "[verification][wall]") {
+    // Face on, the hull's vertices on that face penetrate together: one aggregated contact.
+    Scenario scenario = wall_scenario(WallContact{}, 0.3);
+    scenario.rocks[0].rock.kind = rockfall::shapes::RockKind::massive;
+    const Outcome outcome = simulate(scenario, 1);
+    REQUIRE(outcome.rocks.size() == 1);
+    const std::vector<WallHit>& hits = outcome.rocks[0].wall_hits;
+    REQUIRE(!hits.empty());
+    const WallHit& hit = hits[0];
+    const Vec3 n(-1.0, 0.0, 0.0);
+    const double mass = kMass;  // same density and volume-equivalent diameter as the sphere
+    const double momentum_change = mass * (hit.velocity_after - hit.velocity_before).dot(n);
+    CAPTURE(hits.size(), hit.normal_speed, hit.normal_impulse, momentum_change,
+            hit.peak_normal_force, hit.history.size());
+    CHECK_THAT(hit.normal_impulse, WithinRel(momentum_change, 0.02));
+    CHECK_THAT(hit.normal_impulse, WithinRel(mass * 1.3 * hit.normal_speed, 0.05));
+    CHECK(hit.history.size() >= 20);
+}
