@@ -15,10 +15,12 @@ constexpr int power(int base, int exponent) {
     return exponent == 0 ? 1 : base * power(base, exponent - 1);
 }
 
-// Blocks are 4 nodes per axis; a particle block (particles whose stencil base node lies in one
-// node block) writes nodes [4b, 4b + 5] on each axis, i.e. its own node block and the next.
+// Grid storage blocks are 4 nodes per axis. Particles are grouped in particle blocks of 2 base
+// nodes per axis: particle block b writes nodes [2b, 2b + 3] on each axis (one or two storage
+// blocks), so particle blocks of the same parity (colour) never write the same node.
 inline constexpr int kBlockEdge = 4;
-inline constexpr int kLocalEdge = kBlockEdge + 2;
+inline constexpr int kParticleBlockEdge = 2;
+inline constexpr int kLocalEdge = kParticleBlockEdge + 2;
 
 template <int Dim>
 inline constexpr int kBlockNodes = power(kBlockEdge, Dim);

@@ -20,23 +20,29 @@ struct KernelFrame {
 
 // Quadratic B-spline stencil of a particle: base node, fractional offset fx = x/h - base in
 // [0.5, 1.5) and the three weights per axis (Steffen et al. 2008; Hu et al. 2018, eq. 5 ff.).
+// The kernels below use plain arrays: Eigen's per-coefficient range asserts, which stay on in
+// RelWithDebInfo, would cost about a fifth of the step.
 template <int Dim>
 struct Stencil {
-    IVec<Dim> base;
-    Vec<Dim> fx;
-    std::array<std::array<double, 3>, Dim> w;
+    int base[Dim];
+    double fx[Dim];
+    double w[Dim][3];
 };
 
 template <int Dim>
 inline Stencil<Dim> make_stencil(const KernelFrame<Dim>& frame, const Vec<Dim>& x) {
     Stencil<Dim> s;
+    const double* xp = x.data();
+    const double* origin = frame.origin.data();
+    const double inverse_h = 1.0 / frame.h;
     for (int d = 0; d < Dim; ++d) {
-        const double xl = (x[d] - frame.origin[d]) / frame.h;
+        const double xl = (xp[d] - origin[d]) * inverse_h;
         s.base[d] = static_cast<int>(std::floor(xl - 0.5));
         const double f = xl - s.base[d];
         s.fx[d] = f;
-        s.w[static_cast<std::size_t>(d)] = {
-            0.5 * (1.5 - f) * (1.5 - f), 0.75 - (f - 1.0) * (f - 1.0), 0.5 * (f - 0.5) * (f - 0.5)};
+        s.w[d][0] = 0.5 * (1.5 - f) * (1.5 - f);
+        s.w[d][1] = 0.75 - (f - 1.0) * (f - 1.0);
+        s.w[d][2] = 0.5 * (f - 0.5) * (f - 0.5);
     }
     return s;
 }
@@ -54,81 +60,110 @@ inline IVec<Dim> block_local_coords(int j) {
 
 // Adds one particle's mass and momentum to the 6^Dim local buffer of its particle block:
 // w_ip [m v + Q (x_i - x_p); m] with Q = m C - dt V D^-1 sigma, D^-1 = 4/h^2 (Hu et al. 2018,
-// eq. 29). The affine term is advanced incrementally along each axis.
+// eq. 29). With x_i - x_p = h (s - fx) for the integer node offset s, the bracket is
+// q0 + h Q s, advanced incrementally along each axis.
 template <int Dim>
 inline void scatter_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& first_node, double dt,
                              const Vec<Dim>& x, const Vec<Dim>& v, const Mat<Dim>& c,
                              const Mat3& stress, double m, double volume,
                              std::array<Node<Dim>, kLocalNodes<Dim>>& local) {
+    constexpr int N = Dim + 1;
     const Stencil<Dim> s = make_stencil(frame, x);
     const double h = frame.h;
-    const Mat<Dim> q =
-        m * c - (dt * volume * 4.0 / (h * h)) * stress.template topLeftCorner<Dim, Dim>();
-    Node<Dim> q0;
-    q0.template head<Dim>() = m * v - h * (q * s.fx);
-    q0[Dim] = m;
-    std::array<Node<Dim>, Dim> step;
+    const double force = dt * volume * 4.0 / (h * h);
+    const double* cm = c.data();
+    const double* sigma = stress.data();
+    const double* vp = v.data();
+    // step[d][r] = h Q(r, d) (column-major storage of C and sigma).
+    double step[Dim][N];
     for (int d = 0; d < Dim; ++d) {
-        step[static_cast<std::size_t>(d)].template head<Dim>() = h * q.col(d);
-        step[static_cast<std::size_t>(d)][Dim] = 0.0;
+        for (int r = 0; r < Dim; ++r) {
+            step[d][r] = h * (m * cm[r + Dim * d] - force * sigma[r + 3 * d]);
+        }
+        step[d][Dim] = 0.0;
     }
-    const IVec<Dim> l = s.base - first_node;
-    const auto& w = s.w;
+    double q0[N];
+    for (int r = 0; r < Dim; ++r) {
+        q0[r] = m * vp[r];
+        for (int d = 0; d < Dim; ++d) {
+            q0[r] -= step[d][r] * s.fx[d];
+        }
+    }
+    q0[Dim] = m;
+    int l[Dim];
+    const int* first = first_node.data();
+    for (int d = 0; d < Dim; ++d) {
+        l[d] = s.base[d] - first[d];
+    }
+    double* out = local[0].data();
     if constexpr (Dim == 2) {
         for (int i = 0; i < 3; ++i) {
-            const Node<2> qi = q0 + i * step[0];
             for (int j = 0; j < 3; ++j) {
-                const int index = (l[0] + i) * kLocalEdge + (l[1] + j);
-                local[static_cast<std::size_t>(index)] += (w[0][i] * w[1][j]) * (qi + j * step[1]);
+                const double wij = s.w[0][i] * s.w[1][j];
+                double* node = out + N * ((l[0] + i) * kLocalEdge + (l[1] + j));
+                for (int r = 0; r < N; ++r) {
+                    node[r] += wij * (q0[r] + i * step[0][r] + j * step[1][r]);
+                }
             }
         }
     } else {
         for (int i = 0; i < 3; ++i) {
-            const Node<3> qi = q0 + i * step[0];
             for (int j = 0; j < 3; ++j) {
-                const Node<3> qij = qi + j * step[1];
-                const double wij = w[0][i] * w[1][j];
-                const int row = ((l[0] + i) * kLocalEdge + (l[1] + j)) * kLocalEdge + l[2];
+                double qij[N];
+                for (int r = 0; r < N; ++r) {
+                    qij[r] = q0[r] + i * step[0][r] + j * step[1][r];
+                }
+                const double wij = s.w[0][i] * s.w[1][j];
+                double* node =
+                    out + N * (((l[0] + i) * kLocalEdge + (l[1] + j)) * kLocalEdge + l[2]);
                 for (int k = 0; k < 3; ++k) {
-                    local[static_cast<std::size_t>(row + k)] +=
-                        (wij * w[2][k]) * (qij + k * step[2]);
+                    const double weight = wij * s.w[2][k];
+                    for (int r = 0; r < N; ++r) {
+                        node[N * k + r] += weight * (qij[r] + k * step[2][r]);
+                    }
                 }
             }
         }
     }
 }
 
-// Calls f(local_index, slot_index, block_node_index) for every node of a particle block's 6^Dim
-// local buffer, visiting the 2^Dim node blocks it spans.
+// Calls f(local_index, grid_data_index) for every node of a particle block's local buffer.
+// The buffer starts at node `first_node` (even); along each axis its 4 nodes fall in storage
+// block first_node / 4 (offset 0) or the next (offset 1), whose slots are `slots` indexed by the
+// offsets' bits.
 template <int Dim, typename F>
-inline void for_each_local_node(const std::array<std::int32_t, kColours<Dim>>& slots, F&& f) {
-    for (int o = 0; o < kColours<Dim>; ++o) {
-        IVec<Dim> from;
-        IVec<Dim> to;
-        for (int d = 0; d < Dim; ++d) {
-            const bool second = ((o >> d) & 1) != 0;
-            from[d] = second ? kBlockEdge : 0;
-            to[d] = second ? kLocalEdge : kBlockEdge;
+inline void for_each_local_node(const IVec<Dim>& first_node,
+                                const std::array<std::int32_t, kColours<Dim>>& slots, F&& f) {
+    int offset[Dim][kLocalEdge];
+    int index[Dim][kLocalEdge];
+    for (int d = 0; d < Dim; ++d) {
+        const int base_block = first_node[d] / kBlockEdge;
+        for (int l = 0; l < kLocalEdge; ++l) {
+            const int g = first_node[d] + l;
+            offset[d][l] = g / kBlockEdge - base_block;
+            index[d][l] = g % kBlockEdge;
         }
-        const std::size_t base =
-            static_cast<std::size_t>(slots[static_cast<std::size_t>(o)]) * kBlockNodes<Dim>;
-        if constexpr (Dim == 2) {
-            for (int a = from[0]; a < to[0]; ++a) {
-                for (int b = from[1]; b < to[1]; ++b) {
-                    f(a * kLocalEdge + b,
-                      base +
-                          static_cast<std::size_t>((a % kBlockEdge) * kBlockEdge + b % kBlockEdge));
-                }
+    }
+    if constexpr (Dim == 2) {
+        for (int a = 0; a < kLocalEdge; ++a) {
+            for (int b = 0; b < kLocalEdge; ++b) {
+                const int o = offset[0][a] | (offset[1][b] << 1);
+                const auto slot = static_cast<std::size_t>(slots[static_cast<std::size_t>(o)]);
+                f(a * kLocalEdge + b,
+                  slot * kBlockNodes<2> +
+                      static_cast<std::size_t>(index[0][a] * kBlockEdge + index[1][b]));
             }
-        } else {
-            for (int a = from[0]; a < to[0]; ++a) {
-                for (int b = from[1]; b < to[1]; ++b) {
-                    for (int c = from[2]; c < to[2]; ++c) {
-                        f((a * kLocalEdge + b) * kLocalEdge + c,
-                          base + static_cast<std::size_t>(
-                                     ((a % kBlockEdge) * kBlockEdge + b % kBlockEdge) * kBlockEdge +
-                                     c % kBlockEdge));
-                    }
+        }
+    } else {
+        for (int a = 0; a < kLocalEdge; ++a) {
+            for (int b = 0; b < kLocalEdge; ++b) {
+                for (int c = 0; c < kLocalEdge; ++c) {
+                    const int o = offset[0][a] | (offset[1][b] << 1) | (offset[2][c] << 2);
+                    const auto slot = static_cast<std::size_t>(slots[static_cast<std::size_t>(o)]);
+                    f((a * kLocalEdge + b) * kLocalEdge + c,
+                      slot * kBlockNodes<3> +
+                          static_cast<std::size_t>(
+                              (index[0][a] * kBlockEdge + index[1][b]) * kBlockEdge + index[2][c]));
                 }
             }
         }
@@ -139,61 +174,118 @@ inline void for_each_local_node(const std::array<std::int32_t, kColours<Dim>>& s
 // one colour).
 template <int Dim>
 inline void add_local_to_grid(const std::array<Node<Dim>, kLocalNodes<Dim>>& local,
+                              const IVec<Dim>& first_node,
                               const std::array<std::int32_t, kColours<Dim>>& slots,
                               std::vector<Node<Dim>>& data) {
-    for_each_local_node<Dim>(
-        slots, [&](int l, std::size_t g) { data[g] += local[static_cast<std::size_t>(l)]; });
+    for_each_local_node<Dim>(first_node, slots, [&](int l, std::size_t g) {
+        data[g] += local[static_cast<std::size_t>(l)];
+    });
 }
 
 // Copies the grid velocities a particle block reads into its local buffer.
 template <int Dim>
-inline void gather_local_velocities(const std::vector<Node<Dim>>& data,
+inline void gather_local_velocities(const std::vector<Node<Dim>>& data, const IVec<Dim>& first_node,
                                     const std::array<std::int32_t, kColours<Dim>>& slots,
                                     std::array<Vec<Dim>, kLocalNodes<Dim>>& local) {
-    for_each_local_node<Dim>(slots, [&](int l, std::size_t g) {
+    for_each_local_node<Dim>(first_node, slots, [&](int l, std::size_t g) {
         local[static_cast<std::size_t>(l)] = data[g].template head<Dim>();
     });
 }
 
 // APIC / MLS-MPM G2P: v_p = sum w v_i, C_p = D^-1 sum w v_i (x_i - x_p)^T
 // = (4/h) (sum w v_i s^T - v_p fx^T) with s the integer node offset (Jiang et al. 2015, eq. 10;
-// Hu et al. 2018, eq. 17).
+// Hu et al. 2018, eq. 17). The sums are separable: innermost axis first.
 template <int Dim>
 inline void gather_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& first_node,
                             const std::array<Vec<Dim>, kLocalNodes<Dim>>& local, const Vec<Dim>& x,
                             Vec<Dim>& v, Mat<Dim>& c) {
     const Stencil<Dim> s = make_stencil(frame, x);
-    const IVec<Dim> l = s.base - first_node;
+    int l[Dim];
+    const int* first = first_node.data();
+    for (int d = 0; d < Dim; ++d) {
+        l[d] = s.base[d] - first[d];
+    }
+    const double* velocity = local[0].data();
+    double sum[Dim] = {};
+    double moment[Dim][Dim] = {};  // moment[d][r] = sum w v_r s_d
     const auto& w = s.w;
-    Vec<Dim> sum = Vec<Dim>::Zero();
-    Mat<Dim> moment = Mat<Dim>::Zero();
     if constexpr (Dim == 2) {
         for (int i = 0; i < 3; ++i) {
+            double row_sum[2] = {};
+            double row_j[2] = {};
             for (int j = 0; j < 3; ++j) {
-                const int index = (l[0] + i) * kLocalEdge + (l[1] + j);
-                const Vec<2> t = (w[0][i] * w[1][j]) * local[static_cast<std::size_t>(index)];
-                sum += t;
-                moment.col(0) += i * t;
-                moment.col(1) += j * t;
+                const double* vi = velocity + 2 * ((l[0] + i) * kLocalEdge + (l[1] + j));
+                for (int r = 0; r < 2; ++r) {
+                    row_sum[r] += w[1][j] * vi[r];
+                    row_j[r] += (j * w[1][j]) * vi[r];
+                }
+            }
+            for (int r = 0; r < 2; ++r) {
+                sum[r] += w[0][i] * row_sum[r];
+                moment[0][r] += (i * w[0][i]) * row_sum[r];
+                moment[1][r] += w[0][i] * row_j[r];
             }
         }
     } else {
         for (int i = 0; i < 3; ++i) {
+            double row_sum[3] = {};
+            double row_j[3] = {};
+            double row_k[3] = {};
             for (int j = 0; j < 3; ++j) {
-                const double wij = w[0][i] * w[1][j];
-                const int row = ((l[0] + i) * kLocalEdge + (l[1] + j)) * kLocalEdge + l[2];
-                for (int k = 0; k < 3; ++k) {
-                    const Vec<3> t = (wij * w[2][k]) * local[static_cast<std::size_t>(row + k)];
-                    sum += t;
-                    moment.col(0) += i * t;
-                    moment.col(1) += j * t;
-                    moment.col(2) += k * t;
+                const double* v0 =
+                    velocity + 3 * (((l[0] + i) * kLocalEdge + (l[1] + j)) * kLocalEdge + l[2]);
+                for (int r = 0; r < 3; ++r) {
+                    const double a = w[2][0] * v0[r] + w[2][1] * v0[3 + r] + w[2][2] * v0[6 + r];
+                    const double b = w[2][1] * v0[3 + r] + 2.0 * w[2][2] * v0[6 + r];
+                    row_sum[r] += w[1][j] * a;
+                    row_j[r] += (j * w[1][j]) * a;
+                    row_k[r] += w[1][j] * b;
                 }
+            }
+            for (int r = 0; r < 3; ++r) {
+                sum[r] += w[0][i] * row_sum[r];
+                moment[0][r] += (i * w[0][i]) * row_sum[r];
+                moment[1][r] += w[0][i] * row_j[r];
+                moment[2][r] += w[0][i] * row_k[r];
             }
         }
     }
-    v = sum;
-    c = (4.0 / frame.h) * (moment - sum * s.fx.transpose());
+    const double scale = 4.0 / frame.h;
+    double* vp = v.data();
+    double* cp = c.data();
+    for (int r = 0; r < Dim; ++r) {
+        vp[r] = sum[r];
+        for (int d = 0; d < Dim; ++d) {
+            cp[r + Dim * d] = scale * (moment[d][r] - sum[r] * s.fx[d]);
+        }
+    }
+}
+
+// Jaumann co-rotation sigma + dt (W sigma - sigma W) with W = skew(L); since W is skew and sigma
+// symmetric, W sigma - sigma W = M + M^T with M = W sigma. Written out: small Eigen products are
+// not inlined at -O2.
+inline Mat3 corotate(const Mat3& sigma, const Mat3& l, double dt) {
+    const double* g = l.data();
+    const double* t = sigma.data();
+    // Column-major: L(r, c) = g[r + 3c].
+    const double a = 0.5 * (g[3] - g[1]);
+    const double b = 0.5 * (g[6] - g[2]);
+    const double c = 0.5 * (g[7] - g[5]);
+    // W = [[0, a, b], [-a, 0, c], [-b, -c, 0]]; M = W sigma.
+    double m[9];
+    for (int col = 0; col < 3; ++col) {
+        m[0 + 3 * col] = a * t[1 + 3 * col] + b * t[2 + 3 * col];
+        m[1 + 3 * col] = -a * t[0 + 3 * col] + c * t[2 + 3 * col];
+        m[2 + 3 * col] = -b * t[0 + 3 * col] - c * t[1 + 3 * col];
+    }
+    Mat3 out;
+    double* o = out.data();
+    for (int col = 0; col < 3; ++col) {
+        for (int r = 0; r < 3; ++r) {
+            o[r + 3 * col] = t[r + 3 * col] + dt * (m[r + 3 * col] + m[col + 3 * r]);
+        }
+    }
+    return out;
 }
 
 // Slip walls on the outer two node layers of the domain: no velocity out of the domain.

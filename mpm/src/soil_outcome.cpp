@@ -1,1 +1,192 @@
-// placeholder
+#include "soil_model.hpp"
+
+#include "mpm/soil.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rockfall::mpm {
+namespace {
+
+template <int Dim>
+ParticleFrame make_frame(const Particles<Dim>& p, double time) {
+    ParticleFrame frame;
+    frame.time = time;
+    const std::size_t n = p.size();
+    frame.position.reserve(n);
+    frame.velocity.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        frame.position.push_back(to_scene<Dim>(p.position[i]));
+        frame.velocity.push_back(to_scene<Dim>(p.velocity[i]));
+        const double mean = p.stress[i].trace() / 3.0;
+        const Mat3 deviator = p.stress[i] - mean * Mat3::Identity();
+        frame.mean_stress.push_back(mean);
+        frame.deviatoric_stress.push_back(std::sqrt(0.5 * deviator.squaredNorm()));
+    }
+    frame.mass = p.mass;
+    frame.plastic_shear_strain = p.plastic_shear_strain;
+    return frame;
+}
+
+template <int Dim>
+double kinetic_energy(const Particles<Dim>& p) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        sum += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
+    }
+    return sum;
+}
+
+template <int Dim>
+double front(const Particles<Dim>& p) {
+    double x = -std::numeric_limits<double>::infinity();
+    for (const Vec<Dim>& position : p.position) {
+        x = std::max(x, position[0]);
+    }
+    return x;
+}
+
+template <int Dim>
+SoilDeposit deposit_of(const Particles<Dim>& p, const shapes::Slope& slope, double cell,
+                       double half_spacing) {
+    SoilDeposit deposit;
+    double x_min = std::numeric_limits<double>::infinity();
+    double x_max = -std::numeric_limits<double>::infinity();
+    for (const Vec<Dim>& position : p.position) {
+        x_min = std::min(x_min, position[0]);
+        x_max = std::max(x_max, position[0]);
+    }
+    deposit.runout_x = x_max + half_spacing;
+    deposit.runout_past_toe = deposit.runout_x - slope.toe_x();
+    const int bins = static_cast<int>(std::floor((x_max - x_min) / cell)) + 1;
+    deposit.profile_height.assign(static_cast<std::size_t>(bins), 0.0);
+    for (int b = 0; b < bins; ++b) {
+        deposit.profile_x.push_back(x_min + (b + 0.5) * cell);
+    }
+    for (const Vec<Dim>& position : p.position) {
+        const Vec3 x = to_scene<Dim>(position);
+        const auto b = static_cast<std::size_t>(
+            std::clamp(static_cast<int>((x.x() - x_min) / cell), 0, bins - 1));
+        const double height = x.z() + half_spacing - slope.surface_height(x.x());
+        deposit.profile_height[b] = std::max(deposit.profile_height[b], height);
+    }
+    return deposit;
+}
+
+// Adds the impulse of a step spanning [t0, t1] to the sample bins it overlaps, in proportion
+// to the overlap (bin k covers [k ds, (k + 1) ds]).
+void bin_impulse(std::vector<double>& bins, double ds, double t0, double t1, double impulse) {
+    const double dt = t1 - t0;
+    const int last = static_cast<int>(bins.size()) - 1;
+    for (int k = std::clamp(static_cast<int>(t0 / ds), 0, last);
+         k <= std::clamp(static_cast<int>(t1 / ds), 0, last); ++k) {
+        const double overlap = std::min(t1, (k + 1) * ds) - std::max(t0, k * ds);
+        if (overlap > 0.0) {
+            bins[static_cast<std::size_t>(k)] += impulse * overlap / dt;
+        }
+    }
+}
+
+template <int Dim>
+SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
+    detail::SoilModel<Dim> model = detail::build_soil_model<Dim>(scenario);
+    Solver<Dim>& solver = *model.solver;
+    const SoilOutput& output = scenario.output;
+    SoilOutcome outcome;
+    outcome.dimension = Dim;
+    outcome.particles = static_cast<long>(solver.particles().size());
+    outcome.mass = solver.particles().total_mass();
+
+    const double duration = output.duration;
+    const double ds = output.sample_interval;
+    const int samples = std::max(1, static_cast<int>(std::ceil(duration / ds - 1e-9)));
+    std::vector<double> impulse_bins(static_cast<std::size_t>(samples), 0.0);
+    int next_sample = 1;
+    double next_frame = 0.0;
+    auto emit_frames = [&] {
+        while (on_frame && next_frame <= solver.time() + 1e-12) {
+            on_frame(make_frame(solver.particles(), solver.time()));
+            next_frame += output.frame_interval;
+        }
+    };
+    emit_frames();
+
+    while (solver.time() < duration - 1e-12) {
+        const double t0 = solver.time();
+        const double dt = std::min(solver.stable_time_step(), duration - t0);
+        const StepReport& report = solver.step(dt);
+        const double t1 = solver.time();
+        const double impulse = report.impulse[detail::kWallGroup].x();
+        outcome.step_time.push_back(t1);
+        outcome.step_wall_force.push_back(impulse / dt);
+        outcome.wall_impulse += impulse;
+        bin_impulse(impulse_bins, ds, t0, t1, impulse);
+        if (report.clamped_particles > 0 && outcome.status == SoilStatus::completed) {
+            outcome.status = SoilStatus::left_domain;
+            outcome.message = "particles reached the grid's edge at t = " + std::to_string(t1) +
+                              " s and were held there";
+        }
+        while (next_sample <= samples && next_sample * ds <= t1 + 1e-9) {
+            const Vec3 com = to_scene<Dim>(solver.particles().centre_of_mass());
+            outcome.sample_time.push_back(next_sample * ds);
+            outcome.centre_of_mass.push_back(com);
+            outcome.front_x.push_back(front(solver.particles()) + 0.5 * model.particle_spacing);
+            outcome.kinetic_energy.push_back(kinetic_energy(solver.particles()));
+            ++next_sample;
+            if (!com.allFinite() || !std::isfinite(outcome.kinetic_energy.back())) {
+                outcome.status = SoilStatus::non_finite;
+                outcome.message = "non-finite particle state at t = " + std::to_string(t1) + " s";
+            }
+        }
+        if (outcome.status == SoilStatus::non_finite) {
+            break;
+        }
+        emit_frames();
+    }
+    outcome.steps = solver.step_count();
+
+    const std::size_t recorded = outcome.sample_time.size();
+    for (std::size_t k = 0; k < recorded; ++k) {
+        outcome.wall_force.push_back(impulse_bins[k] / ds);
+    }
+    const int half = static_cast<int>(std::lround(0.5 * output.filter_window / ds));
+    outcome.wall_force_filtered = moving_average(outcome.wall_force, 2 * half + 1);
+    for (std::size_t k = 0; k < recorded; ++k) {
+        if (outcome.wall_force[k] > outcome.peak_wall_force) {
+            outcome.peak_wall_force = outcome.wall_force[k];
+            outcome.peak_wall_force_time = outcome.sample_time[k];
+        }
+        outcome.peak_wall_force_filtered =
+            std::max(outcome.peak_wall_force_filtered, outcome.wall_force_filtered[k]);
+    }
+    outcome.deposit = deposit_of(solver.particles(), model.slope, scenario.numerics.cell_size,
+                                 0.5 * model.particle_spacing);
+    return outcome;
+}
+
+}  // namespace
+
+std::vector<double> moving_average(const std::vector<double>& values, int window_samples) {
+    const int n = static_cast<int>(values.size());
+    const int half = std::max(0, window_samples / 2);
+    std::vector<double> out(values.size(), 0.0);
+    for (int i = 0; i < n; ++i) {
+        const int lo = std::max(0, i - half);
+        const int hi = std::min(n - 1, i + half);
+        double sum = 0.0;
+        for (int j = lo; j <= hi; ++j) {
+            sum += values[static_cast<std::size_t>(j)];
+        }
+        out[static_cast<std::size_t>(i)] = sum / (hi - lo + 1);
+    }
+    return out;
+}
+
+SoilOutcome run_soil(const SoilScenario& scenario, const FrameCallback& on_frame) {
+    validate(scenario);
+    return scenario.numerics.dimension == 2 ? run<2>(scenario, on_frame)
+                                            : run<3>(scenario, on_frame);
+}
+
+}  // namespace rockfall::mpm

@@ -2,15 +2,16 @@
 
 #include "grid.hpp"
 #include "kernels.hpp"
+#include "thread_pool.hpp"
 
 #include <Eigen/LU>
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <omp.h>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 namespace rockfall::mpm {
 
@@ -19,6 +20,7 @@ using detail::kBlockNodes;
 using detail::kColours;
 using detail::kLocalEdge;
 using detail::kLocalNodes;
+using detail::kParticleBlockEdge;
 using detail::Node;
 
 template <int Dim>
@@ -26,11 +28,11 @@ struct Solver<Dim>::Grid : detail::BlockGrid<Dim> {
     using detail::BlockGrid<Dim>::BlockGrid;
 };
 
-// A non-empty particle block: its block coordinates, its range in the sorted order and the
-// slots of the 2^Dim node blocks it writes.
+// A non-empty particle block: the first node it writes (2 b per axis), its range in the sorted
+// order and the slots of the storage blocks it writes (by per-axis offset bits; -1 unused).
 template <int Dim>
 struct ParticleBlock {
-    IVec<Dim> block;
+    IVec<Dim> first_node;
     int begin;
     int end;
     std::array<std::int32_t, kColours<Dim>> slots;
@@ -46,6 +48,7 @@ struct PlacedBody {
 
 template <int Dim>
 struct Solver<Dim>::Workspace {
+    IVec<Dim> particle_blocks;
     std::vector<std::int32_t> key;
     std::vector<std::int32_t> order;
     std::vector<std::int32_t> block_start;
@@ -57,7 +60,20 @@ struct Solver<Dim>::Workspace {
     std::vector<detail::Bounds> static_bounds;
     std::vector<PlacedBody> bodies;
     Particles<Dim> scratch;
+    // One partial result per task, reduced in task order.
+    std::vector<double> task_max;
+    std::vector<int> task_count;
+    std::unique_ptr<detail::ThreadPool> pool;
 };
+
+namespace {
+
+// Particles per task in particle-wise phases.
+constexpr int kParticleGrain = 1024;
+// Storage blocks per task in the grid phases.
+constexpr int kBlockGrain = 8;
+
+}  // namespace
 
 namespace {
 
@@ -111,6 +127,9 @@ Solver<Dim>::Solver(const SolverSettings& settings, const Material& material,
         nodes[d] = static_cast<int>(std::ceil(extent / s.cell_size - 1e-9)) + 1;
     }
     grid_ = std::make_unique<Grid>(lo, s.cell_size, nodes);
+    for (int d = 0; d < Dim; ++d) {
+        work_->particle_blocks[d] = (nodes[d] + kParticleBlockEdge - 1) / kParticleBlockEdge;
+    }
 
     for (const StaticBoundary& b : statics_) {
         require(b.group >= 0 && b.group < kBoundaryGroups, "statics[].group", b.group, "",
@@ -140,7 +159,9 @@ Solver<Dim>::Solver(const SolverSettings& settings, const Material& material,
         max_density_ = std::max(max_density_, particles_.mass[p] / particles_.volume[p]);
         max_speed_ = std::max(max_speed_, particles_.velocity[p].norm());
     }
-    threads_ = s.threads > 0 ? s.threads : omp_get_max_threads();
+    threads_ = s.threads > 0 ? s.threads
+                             : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    work_->pool = std::make_unique<detail::ThreadPool>(threads_);
 }
 
 template <int Dim>
@@ -190,27 +211,42 @@ void Solver<Dim>::bin_particles() {
     w.order.resize(static_cast<std::size_t>(n));
     const Vec<Dim> lo = grid.origin;
     const double h = grid.h;
-    int clamped = 0;
-#pragma omp parallel for num_threads(threads_) schedule(static) reduction(+ : clamped)
-    for (int p = 0; p < n; ++p) {
-        Vec<Dim>& x = particles_.position[static_cast<std::size_t>(p)];
-        IVec<Dim> block;
-        for (int d = 0; d < Dim; ++d) {
-            // Keep the 3-node stencil inside the grid: x/h in [1, nodes - 2].
-            const double low = lo[d] + h;
-            const double high = lo[d] + (grid.nodes[d] - 2) * h;
-            if (!(x[d] >= low && x[d] <= high)) {
-                x[d] = std::clamp(std::isfinite(x[d]) ? x[d] : low, low, high);
-                ++clamped;
+    const int chunks = (n + kParticleGrain - 1) / kParticleGrain;
+    w.task_count.assign(static_cast<std::size_t>(chunks), 0);
+    w.pool->parallel_for(n, kParticleGrain, [&](int begin, int end) {
+        int clamped = 0;
+        for (int p = begin; p < end; ++p) {
+            Vec<Dim>& x = particles_.position[static_cast<std::size_t>(p)];
+            IVec<Dim> block;
+            for (int d = 0; d < Dim; ++d) {
+                // Keep the 3-node stencil inside the grid: x/h in [1, nodes - 2].
+                const double low = lo[d] + h;
+                const double high = lo[d] + (grid.nodes[d] - 2) * h;
+                if (!(x[d] >= low && x[d] <= high)) {
+                    x[d] = std::clamp(std::isfinite(x[d]) ? x[d] : low, low, high);
+                    ++clamped;
+                }
+                const int base = static_cast<int>(std::floor((x[d] - lo[d]) / h - 0.5));
+                block[d] = base / kParticleBlockEdge;
             }
-            const int base = static_cast<int>(std::floor((x[d] - lo[d]) / h - 0.5));
-            block[d] = base / kBlockEdge;
+            int id = block[Dim - 1];
+            for (int d = Dim - 2; d >= 0; --d) {
+                id = id * w.particle_blocks[d] + block[d];
+            }
+            w.key[static_cast<std::size_t>(p)] = id;
         }
-        w.key[static_cast<std::size_t>(p)] = grid.block_id(block);
+        w.task_count[static_cast<std::size_t>(begin / kParticleGrain)] = clamped;
+    });
+    report_.clamped_particles = 0;
+    for (const int c : w.task_count) {
+        report_.clamped_particles += c;
     }
-    report_.clamped_particles = clamped;
 
-    w.block_start.assign(static_cast<std::size_t>(grid.block_count()) + 1, 0);
+    int particle_block_count = 1;
+    for (int d = 0; d < Dim; ++d) {
+        particle_block_count *= w.particle_blocks[d];
+    }
+    w.block_start.assign(static_cast<std::size_t>(particle_block_count) + 1, 0);
     for (const std::int32_t k : w.key) {
         ++w.block_start[static_cast<std::size_t>(k) + 1];
     }
@@ -219,7 +255,7 @@ void Solver<Dim>::bin_particles() {
         list.clear();
     }
     w.active_slots.clear();
-    for (int id = 0; id < grid.block_count(); ++id) {
+    for (int id = 0; id < particle_block_count; ++id) {
         const auto u = static_cast<std::size_t>(id);
         const int count = w.block_start[u + 1];
         w.block_start[u + 1] = w.block_start[u] + count;
@@ -229,17 +265,31 @@ void Solver<Dim>::bin_particles() {
         ParticleBlock<Dim> pb;
         int rest = id;
         int colour = 0;
+        IVec<Dim> first_storage;
+        // Along an axis the 4 written nodes span a second storage block unless 2b is a multiple
+        // of 4.
+        IVec<Dim> spans;
         for (int d = 0; d < Dim; ++d) {
-            pb.block[d] = rest % grid.blocks[d];
-            rest /= grid.blocks[d];
-            colour |= (pb.block[d] & 1) << d;
+            const int b = rest % w.particle_blocks[d];
+            rest /= w.particle_blocks[d];
+            colour |= (b & 1) << d;
+            pb.first_node[d] = kParticleBlockEdge * b;
+            first_storage[d] = pb.first_node[d] / kBlockEdge;
+            spans[d] = (pb.first_node[d] + kLocalEdge - 1) / kBlockEdge - first_storage[d];
         }
         pb.begin = w.block_start[u];
         pb.end = w.block_start[u + 1];
         for (int o = 0; o < kColours<Dim>; ++o) {
-            IVec<Dim> nb = pb.block;
+            IVec<Dim> nb = first_storage;
+            bool used = true;
             for (int d = 0; d < Dim; ++d) {
-                nb[d] += (o >> d) & 1;
+                const int bit = (o >> d) & 1;
+                nb[d] += bit;
+                used = used && bit <= spans[d];
+            }
+            if (!used) {
+                pb.slots[static_cast<std::size_t>(o)] = -1;
+                continue;
             }
             const int slot = grid.ensure_slot(grid.block_id(nb), statics_, w.static_bounds);
             pb.slots[static_cast<std::size_t>(o)] = slot;
@@ -283,15 +333,16 @@ void Solver<Dim>::clear_grid() {
     Grid& grid = *grid_;
     const auto& active = work_->active_slots;
     const int count = static_cast<int>(active.size());
-#pragma omp parallel for num_threads(threads_) schedule(static)
-    for (int i = 0; i < count; ++i) {
-        Node<Dim>* nodes =
-            grid.data.data() +
-            static_cast<std::size_t>(active[static_cast<std::size_t>(i)]) * kBlockNodes<Dim>;
-        for (int j = 0; j < kBlockNodes<Dim>; ++j) {
-            nodes[j].setZero();
+    work_->pool->parallel_for(count, kBlockGrain, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            Node<Dim>* nodes =
+                grid.data.data() +
+                static_cast<std::size_t>(active[static_cast<std::size_t>(i)]) * kBlockNodes<Dim>;
+            for (int j = 0; j < kBlockNodes<Dim>; ++j) {
+                nodes[j].setZero();
+            }
         }
-    }
+    });
 }
 
 // Hu et al. 2018, eq. 29 (MLS-MPM P2G with APIC momentum and the stress force folded into the
@@ -302,25 +353,22 @@ void Solver<Dim>::particles_to_grid(double dt) {
     Workspace& w = *work_;
     const detail::KernelFrame<Dim> frame{grid.origin, grid.h};
     for (const auto& list : w.colours) {
-        const int count = static_cast<int>(list.size());
-#pragma omp parallel for num_threads(threads_) schedule(dynamic, 1)
-        for (int i = 0; i < count; ++i) {
+        w.pool->run(static_cast<int>(list.size()), [&](int i) {
             const ParticleBlock<Dim>& pb =
                 w.blocks[static_cast<std::size_t>(list[static_cast<std::size_t>(i)])];
             std::array<Node<Dim>, kLocalNodes<Dim>> local;
             for (auto& node : local) {
                 node.setZero();
             }
-            const IVec<Dim> first_node = kBlockEdge * pb.block;
             for (int k = pb.begin; k < pb.end; ++k) {
                 const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
-                detail::scatter_particle<Dim>(frame, first_node, dt, particles_.position[p],
+                detail::scatter_particle<Dim>(frame, pb.first_node, dt, particles_.position[p],
                                               particles_.velocity[p], particles_.affine[p],
                                               particles_.stress[p], particles_.mass[p],
                                               particles_.volume[p], local);
             }
-            detail::add_local_to_grid<Dim>(local, pb.slots, grid.data);
-        }
+            detail::add_local_to_grid<Dim>(local, pb.first_node, pb.slots, grid.data);
+        });
     }
 }
 
@@ -346,8 +394,7 @@ void Solver<Dim>::update_grid(double dt) {
         w.slot_impulse.resize(active.size());
     }
     const Vec<Dim> gravity = from_scene<Dim>(settings_.gravity);
-#pragma omp parallel for num_threads(threads_) schedule(static)
-    for (int i = 0; i < count; ++i) {
+    w.pool->run(count, [&](int i) {
         const auto slot = static_cast<std::size_t>(active[static_cast<std::size_t>(i)]);
         auto& impulse = w.slot_impulse[static_cast<std::size_t>(i)];
         for (auto& g : impulse) {
@@ -393,7 +440,7 @@ void Solver<Dim>::update_grid(double dt) {
             }
             node.template head<Dim>() = v;
         }
-    }
+    });
     // Fixed-order reduction over the active blocks: independent of the thread count.
     for (int i = 0; i < count; ++i) {
         for (int g = 0; g < kBoundaryGroups; ++g) {
@@ -412,22 +459,25 @@ void Solver<Dim>::grid_to_particles(double dt) {
     // Damping acts on the particles after the transfer, so the boundary impulses of a body at
     // rest are its full reactions.
     const double damping = 1.0 / (1.0 + settings_.damping * dt);
-    double max_speed_squared = 0.0;
-#pragma omp parallel for num_threads(threads_) schedule(dynamic, 1) reduction(max \
-                                                                              : max_speed_squared)
-    for (int i = 0; i < count; ++i) {
+    w.task_max.assign(static_cast<std::size_t>(count), 0.0);
+    w.pool->run(count, [&](int i) {
+        double max_speed_squared = 0.0;
         const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(i)];
         std::array<Vec<Dim>, kLocalNodes<Dim>> local;
-        detail::gather_local_velocities<Dim>(grid.data, pb.slots, local);
-        const IVec<Dim> first_node = kBlockEdge * pb.block;
+        detail::gather_local_velocities<Dim>(grid.data, pb.first_node, pb.slots, local);
         for (int k = pb.begin; k < pb.end; ++k) {
             const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
-            detail::gather_particle<Dim>(frame, first_node, local, particles_.position[p],
+            detail::gather_particle<Dim>(frame, pb.first_node, local, particles_.position[p],
                                          particles_.velocity[p], particles_.affine[p]);
             particles_.position[p] += dt * particles_.velocity[p];
             particles_.velocity[p] *= damping;
             max_speed_squared = std::max(max_speed_squared, particles_.velocity[p].squaredNorm());
         }
+        w.task_max[static_cast<std::size_t>(i)] = max_speed_squared;
+    });
+    double max_speed_squared = 0.0;
+    for (const double m : w.task_max) {
+        max_speed_squared = std::max(max_speed_squared, m);
     }
     max_speed_ = std::sqrt(max_speed_squared);
 }
@@ -435,32 +485,37 @@ void Solver<Dim>::grid_to_particles(double dt) {
 template <int Dim>
 void Solver<Dim>::update_stress(double dt) {
     const int n = static_cast<int>(particles_.size());
-    double max_density = 0.0;
+    Workspace& w = *work_;
+    w.task_max.assign(static_cast<std::size_t>((n + kParticleGrain - 1) / kParticleGrain), 0.0);
     std::visit(
         [&](const auto& params) {
             using Params = std::decay_t<decltype(params)>;
             using Model = std::conditional_t<std::is_same_v<Params, LinearElastic>,
                                              LinearElasticModel, DruckerPragerModel>;
             const Model model(params);
-#pragma omp parallel for num_threads(threads_) schedule(static) reduction(max : max_density)
-            for (int i = 0; i < n; ++i) {
-                const auto p = static_cast<std::size_t>(i);
-                const Mat<Dim>& c = particles_.affine[p];
-                const Mat3 l = embed<Dim>(c);
-                const Mat3 rate = 0.5 * (l + l.transpose());
-                const Mat3 spin = 0.5 * (l - l.transpose());
-                const Mat3& sigma = particles_.stress[p];
-                // Jaumann rate: co-rotate with the spin before the constitutive update.
-                const Mat3 rotated = sigma + dt * (spin * sigma - sigma * spin);
-                particles_.stress[p] =
-                    model.update(rotated, dt * rate, particles_.plastic_shear_strain[p]);
-                const double jacobian = (Mat<Dim>::Identity() + dt * c).determinant();
-                particles_.volume[p] *= jacobian;
-                max_density = std::max(max_density, particles_.mass[p] / particles_.volume[p]);
-            }
+            w.pool->parallel_for(n, kParticleGrain, [&](int begin, int end) {
+                double max_density = 0.0;
+                for (int i = begin; i < end; ++i) {
+                    const auto p = static_cast<std::size_t>(i);
+                    const Mat<Dim>& c = particles_.affine[p];
+                    const Mat3 l = embed<Dim>(c);
+                    const Mat3 strain_increment = (0.5 * dt) * (l + l.transpose());
+                    // Jaumann rate: co-rotate with the spin before the constitutive update.
+                    const Mat3 rotated = detail::corotate(particles_.stress[p], l, dt);
+                    particles_.stress[p] =
+                        model.update(rotated, strain_increment, particles_.plastic_shear_strain[p]);
+                    const double jacobian = (Mat<Dim>::Identity() + dt * c).determinant();
+                    particles_.volume[p] *= jacobian;
+                    max_density = std::max(max_density, particles_.mass[p] / particles_.volume[p]);
+                }
+                w.task_max[static_cast<std::size_t>(begin / kParticleGrain)] = max_density;
+            });
         },
         material_);
-    max_density_ = max_density;
+    max_density_ = 0.0;
+    for (const double m : w.task_max) {
+        max_density_ = std::max(max_density_, m);
+    }
 }
 
 template class Solver<2>;

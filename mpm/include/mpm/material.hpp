@@ -117,32 +117,57 @@ class DruckerPragerModel {
     /// `plastic_shear_strain`.
     Mat3 update(const Mat3& stress, const Mat3& strain_increment,
                 double& plastic_shear_strain) const {
-        const Mat3 trial = stress + lambda_ * strain_increment.trace() * Mat3::Identity() +
-                           2.0 * shear_ * strain_increment;
-        const double p = trial.trace() / 3.0;
-        Mat3 s = trial - p * Mat3::Identity();
-        const double q = std::sqrt(0.5 * s.squaredNorm());
+        // Plain arrays (column-major, as Eigen stores Mat3): this runs once per particle and
+        // step, and Eigen's coefficient asserts stay on in RelWithDebInfo.
+        const double* sigma = stress.data();
+        const double* e = strain_increment.data();
+        const double volumetric = lambda_ * (e[0] + e[4] + e[8]);
+        double s[9];
+        for (int i = 0; i < 9; ++i) {
+            s[i] = sigma[i] + 2.0 * shear_ * e[i];
+        }
+        const double p = (s[0] + s[4] + s[8]) / 3.0 + volumetric;
+        const double trial_mean = (s[0] + s[4] + s[8]) / 3.0;
+        s[0] -= trial_mean;
+        s[4] -= trial_mean;
+        s[8] -= trial_mean;
+        double norm2 = 0.0;
+        for (int i = 0; i < 9; ++i) {
+            norm2 += s[i] * s[i];
+        }
+        const double q = std::sqrt(0.5 * norm2);
+        double scale = 1.0;
+        double mean = p;
         if (p > tension_cutoff_) {
             // Tension cut-off: the mean stress is held at the cut-off and the deviator is
             // scaled back onto the cone at that pressure.
             const double q_limit = std::max(0.0, xi_c_ - eta_ * tension_cutoff_);
             if (q > q_limit) {
                 plastic_shear_strain += (q - q_limit) / shear_;
-                s *= q_limit / q;
+                scale = q_limit / q;
             }
-            return s + tension_cutoff_ * Mat3::Identity();
+            mean = tension_cutoff_;
+        } else {
+            const double f = q + eta_ * p - xi_c_;
+            if (f > 0.0) {
+                // Return to the smooth cone (de Souza Neto et al. 2008, ch. 8, with no
+                // hardening): dgamma = f / (G + K eta eta_bar). Below the cut-off p <= apex, so
+                // q - G dgamma >= 0 and the apex return is never needed.
+                const double dgamma = f / (shear_ + bulk_ * eta_ * eta_bar_);
+                scale = std::max(0.0, 1.0 - shear_ * dgamma / q);
+                mean = p - bulk_ * eta_bar_ * dgamma;
+                plastic_shear_strain += dgamma;
+            }
         }
-        const double f = q + eta_ * p - xi_c_;
-        if (f <= 0.0) {
-            return trial;
+        Mat3 out;
+        double* o = out.data();
+        for (int i = 0; i < 9; ++i) {
+            o[i] = scale * s[i];
         }
-        // Return to the smooth cone (de Souza Neto et al. 2008, ch. 8, with no hardening):
-        // dgamma = f / (G + K eta eta_bar). Below the cut-off p <= apex, so q - G dgamma >= 0
-        // and the apex return is never needed.
-        const double dgamma = f / (shear_ + bulk_ * eta_ * eta_bar_);
-        const double scale = 1.0 - shear_ * dgamma / q;
-        plastic_shear_strain += dgamma;
-        return std::max(scale, 0.0) * s + (p - bulk_ * eta_bar_ * dgamma) * Mat3::Identity();
+        o[0] += mean;
+        o[4] += mean;
+        o[8] += mean;
+        return out;
     }
 
   private:

@@ -16,10 +16,11 @@
 ///   5. stress update: sigma co-rotated with the spin W = skew(C_p) (Jaumann rate), then the
 ///      constitutive model with the strain increment sym(C_p) dt; V_p *= det(I + dt C_p).
 ///
-/// Parallel and deterministic: particles are sorted by 4-cell grid block; blocks scatter into
-/// private 6^Dim node buffers and blocks of the same colour (2^Dim colours by block parity)
-/// never share nodes, so every node sums its contributions in the same order whatever the
-/// thread count. Results are bitwise identical for any thread count.
+/// Parallel and deterministic: particles are sorted by particle block (2 cells per axis);
+/// blocks scatter into private 4^Dim node buffers, and blocks of the same colour (2^Dim colours
+/// by block parity) never share nodes, so every node sums its contributions in the same order
+/// whatever the thread count. Reductions run in a fixed order. Results are bitwise identical
+/// for any thread count.
 
 #include "mpm/boundary.hpp"
 #include "mpm/material.hpp"
@@ -51,7 +52,7 @@ struct SolverSettings {
     /// v_p <- v_p / (1 + damping dt) after the position update. For quasi-static set-ups only; it
     /// does not alter the boundary reactions of a body at rest.
     double damping = 0.0;
-    /// Worker threads (>= 0; 0 = OpenMP's default).
+    /// Worker threads including the caller (>= 0; 0 = the hardware's thread count).
     int threads = 0;
     /// Steps between physical reorderings of the particle arrays by grid block (>= 1).
     int reorder_interval = 16;
