@@ -1,0 +1,114 @@
+#include "contact_settings.hpp"
+
+#include <BulletCollision/CollisionDispatch/btManifoldResult.h>
+
+#include <algorithm>
+
+namespace rockfall::engine {
+namespace {
+
+// Bullet's user index 2 of every body of ours ("RFRK"); bodies without it are not ours.
+constexpr int kOwnBodyTag = 0x5246524b;
+
+const ContactMaterial* material_of(const btCollisionObject* body) {
+    if (body->getUserIndex2() != kOwnBodyTag) {
+        return nullptr;
+    }
+    return static_cast<const ContactMaterial*>(body->getUserPointer());
+}
+
+bool both_ours(const btCollisionObject* a, const btCollisionObject* b) {
+    return material_of(a) != nullptr && material_of(b) != nullptr;
+}
+
+// The project's rule (scenario.hpp, Material): a contact uses the arithmetic mean of the two
+// materials' coefficients. Bullet's defaults (product, or products with friction for rolling)
+// stay in force for bodies that are not ours.
+btScalar mean_friction(const btCollisionObject* a, const btCollisionObject* b) {
+    if (!both_ours(a, b)) {
+        return btManifoldResult::calculateCombinedFriction(a, b);
+    }
+    return 0.5 * (a->getFriction() + b->getFriction());
+}
+
+btScalar mean_restitution(const btCollisionObject* a, const btCollisionObject* b) {
+    if (!both_ours(a, b)) {
+        return btManifoldResult::calculateCombinedRestitution(a, b);
+    }
+    return 0.5 * (a->getRestitution() + b->getRestitution());
+}
+
+// Bullet limits the angular impulse about each tangent axis to (this value) * (normal
+// impulse), so the value is a length: the resisting torque is mu_r * r * N with r the rock's
+// radius (rock on a static solid) or the smaller radius (rock on rock).
+btScalar rolling_length(const btCollisionObject* a, const btCollisionObject* b) {
+    const ContactMaterial* ma = material_of(a);
+    const ContactMaterial* mb = material_of(b);
+    const double lever = (ma->rolling_lever > 0.0 && mb->rolling_lever > 0.0)
+                             ? std::min(ma->rolling_lever, mb->rolling_lever)
+                             : std::max(ma->rolling_lever, mb->rolling_lever);
+    return 0.5 * (ma->rolling_resistance + mb->rolling_resistance) * lever;
+}
+
+btScalar mean_rolling_friction(const btCollisionObject* a, const btCollisionObject* b) {
+    if (!both_ours(a, b)) {
+        return btManifoldResult::calculateCombinedRollingFriction(a, b);
+    }
+    return rolling_length(a, b);
+}
+
+// Spin about the contact normal meets the same resistance as rolling: one isotropic
+// rolling-resistance torque, mu_r r N, whatever the axis of the relative rotation.
+btScalar mean_spinning_friction(const btCollisionObject* a, const btCollisionObject* b) {
+    if (!both_ours(a, b)) {
+        return btManifoldResult::calculateCombinedSpinningFriction(a, b);
+    }
+    return rolling_length(a, b);
+}
+
+}  // namespace
+
+void attach_material(btCollisionObject& body, const Material& coefficients,
+                     ContactMaterial& material) {
+    material.rolling_resistance = coefficients.rolling_resistance;
+    body.setFriction(coefficients.friction);
+    body.setRestitution(coefficients.restitution);
+    body.setRollingFriction(coefficients.rolling_resistance);
+    body.setSpinningFriction(coefficients.rolling_resistance);
+    body.setUserPointer(&material);
+    body.setUserIndex2(kOwnBodyTag);
+    // Only touching or penetrating points reach the solver: a speculative point (positive
+    // distance) would get the restitution target while still apart and lose the bounce.
+    body.setContactProcessingThreshold(0.0);
+}
+
+void install_material_combiners() {
+    static const bool installed = [] {
+        gCalculateCombinedFrictionCallback = &mean_friction;
+        gCalculateCombinedRestitutionCallback = &mean_restitution;
+        gCalculateCombinedRollingFrictionCallback = &mean_rolling_friction;
+        gCalculateCombinedSpinningFrictionCallback = &mean_spinning_friction;
+        return true;
+    }();
+    (void)installed;
+}
+
+void configure_solver(btContactSolverInfo& info, const Numerics& numerics) {
+    info.m_numIterations = numerics.solver_iterations;
+    // Split impulse: penetration is removed by a separate position-only impulse, so position
+    // correction never adds kinetic energy. Bullet splits only contacts deeper than this
+    // (signed distance below it); +infinity splits all of them.
+    info.m_splitImpulse = 1;
+    info.m_splitImpulsePenetrationThreshold = BT_LARGE_FLOAT;
+    info.m_erp2 = 0.8;
+    // Bounces below this normal speed are dropped (m/s): far below any bounce that matters,
+    // above the g dt a resting contact gains per step (0.01 m/s at 1 ms).
+    info.m_restitutionVelocityThreshold = 0.05;
+    // Two friction directions per contact: with one, a rolling contact (zero slip, so no
+    // velocity to align with) gets an arbitrary direction and slips along the other.
+    info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+    // Stop iterating once impulses change by less than 1 um/s: one rock converges in a few.
+    info.m_leastSquaresResidualThreshold = 1e-8;
+}
+
+}  // namespace rockfall::engine

@@ -1,0 +1,34 @@
+#pragma once
+// Narrow phase for rock hulls against boxes and other hulls. Private to the engine.
+//
+// Bullet's GJK finds one contact point per step and its persistent manifold collects more over
+// the following steps. At an impact that is too late: a block landing on a face is hit at one
+// corner first and loses the bounce to rotation (measured: e = 0.5 came out as 0.42 at 1 ms and
+// 0.39 at 0.5 ms). Bullet can perturb the pair to find the whole face at once, but doing so in
+// every step with fewer than three points doubles the cost of a tumbling rock. This algorithm
+// perturbs only at the first step of a contact (an empty manifold) and runs plain GJK while
+// the contact persists.
+
+#include <btBulletCollisionCommon.h>
+
+#include <memory>
+
+namespace rockfall::engine {
+
+// Creates the impact-aware algorithm for a pair of convex shapes.
+class HullContactCreateFunc : public btCollisionAlgorithmCreateFunc {
+  public:
+    HullContactCreateFunc();
+    ~HullContactCreateFunc() override;
+    btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
+                                                   const btCollisionObjectWrapper* body0,
+                                                   const btCollisionObjectWrapper* body1) override;
+
+  private:
+    std::unique_ptr<btConvexPenetrationDepthSolver> penetration_solver_;
+};
+
+// Size of the algorithm object, for the collision configuration's pool.
+int hull_contact_algorithm_size();
+
+}  // namespace rockfall::engine

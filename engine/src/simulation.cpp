@@ -1,0 +1,223 @@
+#include "engine/simulation.hpp"
+
+#include "recorders.hpp"
+#include "release.hpp"
+#include "state_hash.hpp"
+#include "step_size.hpp"
+#include "stop_rule.hpp"
+#include "world.hpp"
+
+#include "engine/wall_contact.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <optional>
+#include <vector>
+
+namespace rockfall::engine {
+namespace {
+
+// Everything that belongs to one rock during a run.
+struct RockRun {
+    RockRun(shapes::RockGeometry rock, int body_index, double rock_mass, const Vec3& rock_inertia,
+            RockRecorder rock_recorder, StopRule rule)
+        : geometry(std::move(rock)),
+          body(body_index),
+          mass(rock_mass),
+          inertia(rock_inertia),
+          recorder(std::move(rock_recorder)),
+          stop_rule(std::move(rule)) {}
+
+    shapes::RockGeometry geometry;
+    int body = -1;
+    double mass = 0.0;
+    Vec3 inertia = Vec3::Zero();
+    std::optional<WallContactLaw> law;  // only when the scenario has a reaction wall
+    LoadCell load_cell;
+    RockRecorder recorder;
+    StopRule stop_rule;
+    bool active = true;
+    // State after the last step (before the next one) and its gap above the surface.
+    BodyState body_state;
+    RockState state;
+    double gap = 0.0;
+    // Wall contact of the coming step.
+    WallApproach approach;
+    std::optional<WallForce> wall_force;
+    // Whether the rock overlapped the wall before the last step: the contact's speed and step
+    // are fixed at first touch, not again while the overlap lingers after the force vanished.
+    bool touching = false;
+    // Fine step fixed at first touch for the whole contact.
+    double contact_step = 0.0;
+};
+
+// Step size of the coming step and whether the near-wall refinement chose it.
+struct StepChoice {
+    double dt = 0.0;
+    bool fine = false;
+};
+
+// One run: builds the world and steps it, phase by phase, until every rock has stopped.
+class Run {
+  public:
+    Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options);
+    Outcome execute();
+
+  private:
+    void wall_contacts();
+    StepChoice step_size() const;
+    void record(double dt);
+    void stop(std::size_t index, StopReason reason);
+
+    const Scenario& scenario_;
+    const shapes::Slope slope_;
+    World world_;
+    std::vector<RockRun> rocks_;
+    Outcome outcome_;
+    double time_ = 0.0;
+    std::size_t active_count_ = 0;
+};
+
+Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options)
+    : scenario_(scenario), slope_(scenario.slope), world_(scenario, slope_) {
+    assert(!scenario.rocks.empty());
+    Random random(seed);
+    rocks_.reserve(scenario.rocks.size());
+    outcome_.rocks.resize(scenario.rocks.size());
+    for (std::size_t i = 0; i < scenario.rocks.size(); ++i) {
+        const RockRelease& spec = scenario.rocks[i];
+        shapes::RockGeometry geometry = shapes::make_rock(spec.rock.kind, spec.rock.size);
+        const double rolling_radius = 0.5 * geometry.nominal_size;
+        const BodyState initial = release_state(slope_, geometry, spec.release, random);
+        const int body = world_.add_rock(geometry, spec.rock, initial);
+        const double bounding_radius = geometry.bounding_radius;
+        RockRun& rock = rocks_.emplace_back(
+            std::move(geometry), body, world_.mass(body), world_.inertia(body),
+            RockRecorder(scenario, slope_, static_cast<int>(i), rolling_radius, options),
+            StopRule(scenario.numerics, slope_, bounding_radius));
+        if (slope_.wall()) {
+            const double radius =
+                rock.geometry.radius > 0.0 ? rock.geometry.radius : rolling_radius;
+            rock.law.emplace(scenario.wall_contact, scenario.materials.wall, spec.rock.material,
+                             rock.mass, radius);
+        }
+        rock.body_state = initial;
+        rock.state = rock_state(initial, 0.0, rock.mass, rock.inertia);
+        rock.gap = surface_gap(slope_, rock.geometry, initial);
+        rock.recorder.start(rock.state, rock.gap);
+    }
+    active_count_ = rocks_.size();
+}
+
+Outcome Run::execute() {
+    while (active_count_ > 0) {
+        wall_contacts();
+        const StepChoice step = step_size();
+        world_.step(step.dt);
+        time_ += step.dt;
+        ++(step.fine ? outcome_.fine_steps : outcome_.coarse_steps);
+        record(step.dt);
+    }
+    outcome_.simulated_time = time_;
+    outcome_.state_hash = state_hash(outcome_.rocks);
+    return std::move(outcome_);
+}
+
+// Phase 1: the compliant wall contact of each rock that may touch the wall, applied as an
+// external force for the coming step (Bullet clears forces after each step).
+void Run::wall_contacts() {
+    const std::optional<shapes::OrientedBox>& wall = slope_.wall();
+    for (RockRun& rock : rocks_) {
+        rock.wall_force.reset();
+        if (!rock.active || !wall) {
+            continue;
+        }
+        const BodyState& s = rock.body_state;
+        rock.approach = wall_approach(*wall, rock.geometry, s, scenario_.numerics.time_step);
+        if (rock.approach.gap > 0.0 && !rock.touching) {
+            continue;
+        }
+        const std::optional<WallOverlap> overlap =
+            wall_overlap(*wall, rock.geometry, s.position, s.orientation);
+        const bool first_touch = overlap && !rock.touching;
+        rock.touching = overlap.has_value();
+        if (!overlap) {
+            continue;
+        }
+        const Vec3 point_velocity =
+            s.velocity + s.angular_velocity.cross(overlap->point - s.position);
+        if (first_touch) {
+            const double normal_speed = std::max(0.0, -point_velocity.dot(overlap->normal));
+            rock.law->begin_contact(normal_speed);
+            rock.contact_step =
+                fine_step(*rock.law, normal_speed, scenario_.wall_contact.steps_per_contact,
+                          scenario_.numerics.time_step);
+        }
+        rock.wall_force = rock.law->force(*overlap, point_velocity);
+        world_.apply_force(rock.body, rock.wall_force->force, rock.wall_force->point);
+    }
+}
+
+// Phase 2: the coarse step, or the shortest step a rock near the wall needs: the contact's fine
+// step while touching, shrinking approach steps before.
+StepChoice Run::step_size() const {
+    const double coarse = scenario_.numerics.time_step;
+    const int steps_per_contact = scenario_.wall_contact.steps_per_contact;
+    double dt = coarse;
+    for (const RockRun& rock : rocks_) {
+        if (!rock.active || !rock.law) {
+            continue;
+        }
+        const bool in_contact = rock.touching || rock.load_cell.in_contact();
+        dt = std::min(dt, in_contact
+                              ? rock.contact_step
+                              : approach_step(*rock.law, rock.approach, steps_per_contact, coarse));
+    }
+    return {dt, dt < coarse};
+}
+
+// Phase 4 (after the physics step): load cells, recorders and stop rules.
+void Run::record(double dt) {
+    for (std::size_t i = 0; i < rocks_.size(); ++i) {
+        RockRun& rock = rocks_[i];
+        if (!rock.active) {
+            continue;
+        }
+        const BodyState body = world_.state(rock.body);
+        const RockState after = rock_state(body, time_, rock.mass, rock.inertia);
+        const double gap = surface_gap(slope_, rock.geometry, body);
+        if (rock.wall_force || rock.load_cell.in_contact()) {
+            rock.load_cell.record(dt, rock.wall_force, rock.state, after);
+        }
+        rock.recorder.after_step(rock.state, rock.gap, after, gap);
+        rock.body_state = body;
+        rock.state = after;
+        rock.gap = gap;
+        if (const std::optional<StopReason> reason = rock.stop_rule.check(after, dt)) {
+            stop(i, *reason);
+        }
+    }
+}
+
+void Run::stop(std::size_t index, StopReason reason) {
+    RockRun& rock = rocks_[index];
+    RockOutcome& outcome = outcome_.rocks[index];
+    outcome.stop = reason;
+    outcome.stop_time = time_;
+    outcome.final_state = rock.state;
+    rock.load_cell.finish(rock.state);
+    outcome.wall_hits = rock.load_cell.hits();
+    rock.recorder.finish(rock.state, outcome);
+    world_.remove_rock(rock.body);
+    rock.active = false;
+    --active_count_;
+}
+
+}  // namespace
+
+Outcome simulate(const Scenario& scenario, std::uint64_t seed, const RunOptions& options) {
+    Run run(scenario, seed, options);
+    return run.execute();
+}
+
+}  // namespace rockfall::engine

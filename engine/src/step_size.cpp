@@ -1,0 +1,52 @@
+#include "step_size.hpp"
+
+#include "release.hpp"
+
+#include <algorithm>
+
+namespace rockfall::engine {
+namespace {
+
+// Distance kept in reserve when the time to reach the wall is estimated, m: the change of
+// velocity within a step (g dt^2 / 2 is 5e-6 m at 1 ms) must not close the last gap.
+constexpr double kReserve = 1e-4;
+
+}  // namespace
+
+WallApproach wall_approach(const shapes::OrientedBox& wall, const shapes::RockGeometry& rock,
+                           const BodyState& state, double coarse_dt) {
+    Vec3 normal = Vec3::Zero();
+    const double centre_distance = shapes::signed_distance(wall, state.position, &normal);
+    const bool sphere = rock.radius > 0.0;
+    WallApproach approach;
+    approach.closing_speed = state.velocity.norm() +
+                             (sphere ? 0.0 : state.angular_velocity.norm() * rock.bounding_radius);
+    approach.approach_speed = -state.velocity.dot(normal);
+    approach.gap = centre_distance - rock.bounding_radius;
+    if (!sphere && approach.gap <= 2.0 * approach.closing_speed * coarse_dt + kReserve) {
+        // Separation along the normal at the box's closest point bounds the distance from
+        // below (the box's support in that direction is that point): exact facing the front.
+        approach.gap = centre_distance - extent_along(rock, state.orientation, -normal);
+        approach.approach_speed += state.angular_velocity.norm() * rock.bounding_radius;
+    }
+    return approach;
+}
+
+double fine_step(const WallContactLaw& law, double approach_speed, int steps_per_contact,
+                 double coarse_dt) {
+    const double duration =
+        law.contact_duration(std::max(approach_speed, WallContactLaw::kMinContactSpeed));
+    return std::min(coarse_dt, duration / steps_per_contact);
+}
+
+double approach_step(const WallContactLaw& law, const WallApproach& approach, int steps_per_contact,
+                     double coarse_dt) {
+    if (approach.closing_speed <= 0.0) {
+        return coarse_dt;
+    }
+    const double time_to_reach = (approach.gap - kReserve) / approach.closing_speed;
+    const double fine = fine_step(law, approach.approach_speed, steps_per_contact, coarse_dt);
+    return std::clamp(0.5 * time_to_reach, fine, coarse_dt);
+}
+
+}  // namespace rockfall::engine

@@ -1,0 +1,41 @@
+#pragma once
+// Near-wall refinement of the time step (issue 2): the coarse step away from the reaction wall,
+// a fine step that resolves the compliant wall contact by steps_per_contact steps while a rock
+// touches it, and shrinking steps in between. Private to the engine.
+
+#include "world.hpp"
+
+#include "engine/wall_contact.hpp"
+
+namespace rockfall::engine {
+
+// A rock's distance and speed relative to the wall before a step.
+struct WallApproach {
+    // Lower bound of the distance between the rock and the wall box, m.
+    double gap = 0.0;
+    // Upper bound of the rate at which the gap can shrink, m/s: |v|, plus |w| times the
+    // bounding radius for hulls (their corners turn toward the wall).
+    double closing_speed = 0.0;
+    // Normal speed of the rock's nearest point toward the wall, m/s (<= 0: moving away).
+    double approach_speed = 0.0;
+};
+
+// The rock's approach. Beyond two coarse steps (coarse_dt, s) of travel the gap is that of the
+// bounding sphere; closer, that of the rock itself.
+WallApproach wall_approach(const shapes::OrientedBox& wall, const shapes::RockGeometry& rock,
+                           const BodyState& state, double coarse_dt);
+
+// Fine step for a contact approached at `approach_speed` m/s: the law's contact duration over
+// steps_per_contact, never above the coarse step. Speeds below the law's kMinContactSpeed
+// count as that speed, as they do for the law itself.
+double fine_step(const WallContactLaw& law, double approach_speed, int steps_per_contact,
+                 double coarse_dt);
+
+// Step before a rock that does not touch the wall: half the shortest time in which it could
+// reach the wall, between the fine step of a contact at its approach speed and the coarse
+// step. Beyond two coarse steps of travel this is the coarse step; closer, the steps shrink
+// geometrically, so the first touch happens within a fine step.
+double approach_step(const WallContactLaw& law, const WallApproach& approach, int steps_per_contact,
+                     double coarse_dt);
+
+}  // namespace rockfall::engine

@@ -1,0 +1,204 @@
+#include "world.hpp"
+
+#include "collision_shapes.hpp"
+#include "contact_settings.hpp"
+#include "coulomb_solver.hpp"
+#include "hull_contacts.hpp"
+
+#include <btBulletDynamicsCommon.h>
+
+#include <algorithm>
+#include <cassert>
+#include <deque>
+#include <utility>
+#include <vector>
+
+namespace rockfall::engine {
+namespace {
+
+btVector3 to_bt(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+Vec3 to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+btTransform to_bt(const Eigen::Matrix3d& rotation, const Vec3& position) {
+    const btMatrix3x3 basis(rotation(0, 0), rotation(0, 1), rotation(0, 2), rotation(1, 0),
+                            rotation(1, 1), rotation(1, 2), rotation(2, 0), rotation(2, 1),
+                            rotation(2, 2));
+    return btTransform(basis, to_bt(position));
+}
+
+const Material& material_of(const SurfaceMaterials& materials, shapes::SurfaceRole role) {
+    switch (role) {
+        case shapes::SurfaceRole::bar:
+            return materials.bars;
+        case shapes::SurfaceRole::side_wall:
+            return materials.side_walls;
+        case shapes::SurfaceRole::slope:
+        case shapes::SurfaceRole::reaction_wall:
+            break;
+    }
+    return materials.slope;
+}
+
+struct StaticSolid {
+    std::unique_ptr<btBoxShape> shape;
+    std::unique_ptr<btRigidBody> body;
+};
+
+struct RockBody {
+    std::unique_ptr<btConvexShape> shape;
+    std::unique_ptr<btRigidBody> body;
+    double mass = 0.0;
+    Vec3 inertia = Vec3::Zero();
+    bool in_world = false;
+};
+
+}  // namespace
+
+// Members are declared in dependency order: Bullet's world is destroyed first, while the
+// bodies, shapes, broadphase and dispatcher it refers to still exist.
+struct World::Impl {
+    btDefaultCollisionConfiguration configuration;
+    HullContactCreateFunc hull_contacts;
+    btCollisionDispatcher dispatcher{&configuration};
+    // One rock among a few dozen static boxes: the sweep-and-prune broadphase updates one
+    // moving AABB per step against sorted static intervals.
+    btAxisSweep3 broadphase;
+    CoulombSolver solver;
+    // deque: the material records must keep their addresses (Bullet user pointers).
+    std::deque<ContactMaterial> materials;
+    std::vector<StaticSolid> statics;
+    std::vector<RockBody> rocks;
+    btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+
+    Impl(const shapes::Slope& slope, std::size_t rock_count)
+        : configuration(pool_sizes(rock_count)), broadphase(world_min(slope), world_max(slope)) {
+        for (const auto& [a, b] :
+             {std::pair{CONVEX_HULL_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE},
+              std::pair{BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE},
+              std::pair{CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE}}) {
+            dispatcher.registerCollisionCreateFunc(a, b, &hull_contacts);
+        }
+    }
+
+    // Bullet's default pools hold 4096 manifolds and algorithms, cleared at every world's
+    // construction; a run needs a few per rock (more spill into the heap).
+    static btDefaultCollisionConstructionInfo pool_sizes(std::size_t rock_count) {
+        btDefaultCollisionConstructionInfo info;
+        const int pool = static_cast<int>(std::min<std::size_t>(4096, 16 + 8 * rock_count));
+        info.m_defaultMaxPersistentManifoldPoolSize = pool;
+        info.m_defaultMaxCollisionAlgorithmPoolSize = pool;
+        info.m_customCollisionAlgorithmMaxElementSize = hull_contact_algorithm_size();
+        return info;
+    }
+
+    ~Impl() {
+        for (RockBody& rock : rocks) {
+            if (rock.in_world) {
+                world.removeRigidBody(rock.body.get());
+            }
+        }
+        for (StaticSolid& solid : statics) {
+            world.removeRigidBody(solid.body.get());
+        }
+    }
+
+    // Broadphase bounds: the slope's extent with room for rocks flying off it; objects beyond
+    // them still collide, only less efficiently.
+    static btVector3 world_min(const shapes::Slope& slope) {
+        const double reach = 0.5 * slope.spec().width + 10.0;
+        return {-10.0, -reach, -slope.spec().thickness - 10.0};
+    }
+    static btVector3 world_max(const shapes::Slope& slope) {
+        const double reach = 0.5 * slope.spec().width + 10.0;
+        return {slope.end_x() + 10.0, reach, slope.profile().front().y() + 20.0};
+    }
+};
+
+World::World(const Scenario& scenario, const shapes::Slope& slope)
+    : impl_(std::make_unique<Impl>(slope, scenario.rocks.size())) {
+    install_material_combiners();
+    impl_->world.setGravity(btVector3(0.0, 0.0, -scenario.gravity));
+    configure_solver(impl_->world.getSolverInfo(), scenario.numerics);
+    // Static solids never move: their AABBs need no update each step.
+    impl_->world.setForceUpdateAllAabbs(false);
+
+    for (const shapes::OrientedBox& box : slope.solids()) {
+        if (box.role == shapes::SurfaceRole::reaction_wall) {
+            continue;
+        }
+        StaticSolid solid;
+        solid.shape = make_box_shape(box);
+        const btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, solid.shape.get());
+        solid.body = std::make_unique<btRigidBody>(info);
+        solid.body->setWorldTransform(to_bt(box.rotation, box.center));
+        attach_material(*solid.body, material_of(scenario.materials, box.role),
+                        impl_->materials.emplace_back());
+        impl_->world.addRigidBody(solid.body.get());
+        impl_->statics.push_back(std::move(solid));
+    }
+}
+
+World::~World() = default;
+
+int World::add_rock(const shapes::RockGeometry& geometry, const RockSpec& spec,
+                    const BodyState& initial) {
+    RockBody rock;
+    rock.shape = make_rock_shape(geometry);
+    rock.mass = spec.density * geometry.properties.volume;
+    // Our exact principal moments: Bullet's calculateLocalInertia is a bounding-box estimate.
+    rock.inertia = spec.density * geometry.properties.inertia.diagonal();
+    btRigidBody::btRigidBodyConstructionInfo info(rock.mass, nullptr, rock.shape.get(),
+                                                  to_bt(rock.inertia));
+    rock.body = std::make_unique<btRigidBody>(info);
+    rock.body->setWorldTransform(
+        to_bt(initial.orientation.normalized().toRotationMatrix(), initial.position));
+    rock.body->setLinearVelocity(to_bt(initial.velocity));
+    rock.body->setAngularVelocity(to_bt(initial.angular_velocity));
+    // Our own stop rule decides when a rock is at rest; Bullet must never freeze it.
+    rock.body->setActivationState(DISABLE_DEACTIVATION);
+
+    ContactMaterial& material = impl_->materials.emplace_back();
+    attach_material(*rock.body, spec.material, material);
+    material.rolling_lever = 0.5 * geometry.nominal_size;
+
+    impl_->world.addRigidBody(rock.body.get());
+    rock.in_world = true;
+    impl_->rocks.push_back(std::move(rock));
+    return static_cast<int>(impl_->rocks.size()) - 1;
+}
+
+void World::remove_rock(int rock) {
+    RockBody& body = impl_->rocks[static_cast<std::size_t>(rock)];
+    assert(body.in_world);
+    impl_->world.removeRigidBody(body.body.get());
+    body.in_world = false;
+}
+
+void World::apply_force(int rock, const Vec3& force, const Vec3& point) {
+    btRigidBody& body = *impl_->rocks[static_cast<std::size_t>(rock)].body;
+    body.applyForce(to_bt(force), to_bt(point) - body.getCenterOfMassPosition());
+}
+
+void World::step(double dt) {
+    // maxSubSteps = 0: exactly one step of dt, no fixed-step accumulator, no interpolation.
+    impl_->world.stepSimulation(dt, 0);
+}
+
+BodyState World::state(int rock) const {
+    const btRigidBody& body = *impl_->rocks[static_cast<std::size_t>(rock)].body;
+    const btTransform& transform = body.getWorldTransform();
+    const btQuaternion q = transform.getRotation();
+    BodyState state;
+    state.position = to_eigen(transform.getOrigin());
+    state.orientation = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z());
+    state.velocity = to_eigen(body.getLinearVelocity());
+    state.angular_velocity = to_eigen(body.getAngularVelocity());
+    return state;
+}
+
+double World::mass(int rock) const { return impl_->rocks[static_cast<std::size_t>(rock)].mass; }
+
+Vec3 World::inertia(int rock) const { return impl_->rocks[static_cast<std::size_t>(rock)].inertia; }
+
+}  // namespace rockfall::engine

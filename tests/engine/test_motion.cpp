@@ -1,0 +1,218 @@
+// The rigid-body engine against analytic motion, each at the default step (1 ms) and at half
+// of it: free fall, a block sliding on an incline, a sphere rolling without slip, and the
+// drop-bounce that calibrates restitution (issue 2, "Contact calibration").
+
+#include "engine/simulation.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+using namespace rockfall;
+using engine::RockState;
+using engine::Vec3;
+
+namespace {
+
+constexpr double kGravity = 9.81;
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+// One straight segment at `angle_deg`, 40 m long, without bars, side walls or reaction wall;
+// rock and surface share `material` (so the mean rule gives it unchanged).
+engine::Scenario plane_scenario(double angle_deg, shapes::RockKind kind,
+                                const engine::Material& material, double time_step) {
+    engine::Scenario scenario;
+    scenario.slope.segments = {{40.0, angle_deg}};
+    scenario.slope.bars.enabled = false;
+    scenario.slope.side_walls.enabled = false;
+    scenario.slope.wall.enabled = false;
+    scenario.materials.slope = material;
+    scenario.rocks.front().rock.kind = kind;
+    scenario.rocks.front().rock.size = 0.2;
+    scenario.rocks.front().rock.material = material;
+    scenario.rocks.front().release.distance = 5.0;
+    scenario.stations = {};
+    scenario.numerics.time_step = time_step;
+    scenario.gravity = kGravity;
+    return scenario;
+}
+
+// Every state the engine reports, sampled every `interval` seconds (every step when smaller
+// than the step).
+std::vector<RockState> trajectory(const engine::Scenario& scenario, double interval) {
+    std::vector<RockState> states;
+    engine::RunOptions options;
+    options.trajectory_interval = interval;
+    options.trajectory = [&](int, const RockState& state) { states.push_back(state); };
+    engine::simulate(scenario, 1, options);
+    return states;
+}
+
+// The sampled state closest to time t.
+const RockState& at_time(const std::vector<RockState>& states, double t) {
+    const RockState* best = &states.front();
+    for (const RockState& s : states) {
+        if (std::abs(s.time - t) < std::abs(best->time - t)) {
+            best = &s;
+        }
+    }
+    return *best;
+}
+
+// Mean acceleration along `direction` between t0 and t1, m/s2.
+double acceleration(const std::vector<RockState>& states, const Vec3& direction, double t0,
+                    double t1) {
+    const RockState& a = at_time(states, t0);
+    const RockState& b = at_time(states, t1);
+    return (b.velocity - a.velocity).dot(direction) / (b.time - a.time);
+}
+
+Vec3 downslope(double angle_deg) {
+    return {std::cos(radians(angle_deg)), 0.0, -std::sin(radians(angle_deg))};
+}
+
+Vec3 upward_normal(double angle_deg) {
+    return {std::sin(radians(angle_deg)), 0.0, std::cos(radians(angle_deg))};
+}
+
+}  // namespace
+
+TEST_CASE("free fall follows z0 - g t^2 / 2 at two step sizes", "[verification]") {
+    const double dt = GENERATE(1e-3, 5e-4);
+    engine::Scenario scenario = plane_scenario(0.0, shapes::RockKind::sphere, {}, dt);
+    scenario.rocks.front().release.height = 10.0;
+    scenario.numerics.max_time = 1.0;  // 4.9 m of fall: it never lands
+    const std::vector<RockState> states = trajectory(scenario, 0.1);
+    REQUIRE(states.size() >= 10);
+    const double z0 = states.front().position.z();
+    for (const RockState& s : states) {
+        const double t = s.time;
+        // Symplectic Euler: velocity exact; position z0 - g t (t + dt) / 2, an O(dt) lag.
+        CHECK_THAT(s.velocity.z(), WithinAbs(-kGravity * t, 1e-9));
+        CHECK_THAT(s.position.z(), WithinAbs(z0 - 0.5 * kGravity * t * (t + dt), 1e-9));
+        CHECK_THAT(s.position.z(),
+                   WithinAbs(z0 - 0.5 * kGravity * t * t, 0.5 * kGravity * t * dt + 1e-12));
+        CHECK_THAT(s.position.x(), WithinAbs(states.front().position.x(), 1e-12));
+    }
+}
+
+TEST_CASE("a block slides down an incline with a = g (sin t - mu cos t)", "[verification]") {
+    const double dt = GENERATE(1e-3, 5e-4);
+    const double mu = GENERATE(0.3, 0.45);
+    const double angle = 30.0;
+    // Restitution 0: the block lands flat and stays on its face.
+    const engine::Scenario scenario =
+        plane_scenario(angle, shapes::RockKind::massive, {mu, 0.0, 0.0}, dt);
+    const std::vector<RockState> states = trajectory(scenario, 0.01);
+    const double expected = kGravity * (std::sin(radians(angle)) - mu * std::cos(radians(angle)));
+    INFO("dt = " << dt << " s, mu = " << mu);
+    CHECK_THAT(acceleration(states, downslope(angle), 0.5, 2.0), WithinRel(expected, 0.02));
+    // Sliding, not tumbling: the spin stays far below that of rolling at this speed.
+    const RockState& end = at_time(states, 2.0);
+    CHECK(end.angular_velocity.norm() * 0.1 < 0.05 * end.velocity.norm());
+}
+
+TEST_CASE("a sphere rolls without slip with a = 5/7 g sin t", "[verification]") {
+    const double dt = GENERATE(1e-3, 5e-4);
+    const double angle = 30.0;
+    const double radius = 0.1;
+    const engine::Scenario scenario =
+        plane_scenario(angle, shapes::RockKind::sphere, {1.0, 0.0, 0.0}, dt);
+    const std::vector<RockState> states = trajectory(scenario, 0.01);
+    const double expected = 5.0 / 7.0 * kGravity * std::sin(radians(angle));
+    INFO("dt = " << dt << " s");
+    CHECK_THAT(acceleration(states, downslope(angle), 0.5, 2.0), WithinRel(expected, 0.02));
+    const RockState& end = at_time(states, 2.0);
+    CHECK_THAT(end.angular_velocity.norm() * radius, WithinRel(end.velocity.norm(), 0.01));
+}
+
+TEST_CASE("rolling resistance slows a rolling sphere to a = 5/7 g (sin t - mu_r cos t)",
+          "[verification]") {
+    const double dt = GENERATE(1e-3, 5e-4);
+    const double angle = 30.0;
+    const double rolling = 0.05;
+    const engine::Scenario scenario =
+        plane_scenario(angle, shapes::RockKind::sphere, {1.0, 0.0, rolling}, dt);
+    const std::vector<RockState> states = trajectory(scenario, 0.01);
+    // Torque balance with a resisting moment mu_r r N: (7/5) m a = m g (sin t - mu_r cos t).
+    const double expected =
+        5.0 / 7.0 * kGravity * (std::sin(radians(angle)) - rolling * std::cos(radians(angle)));
+    INFO("dt = " << dt << " s");
+    CHECK_THAT(acceleration(states, downslope(angle), 0.5, 2.0), WithinRel(expected, 0.02));
+}
+
+namespace {
+
+// First bounce of a rock dropped from `height` (gap above the surface, m) onto a plane at
+// `angle_deg`: the rebound height along the normal and the ratio of normal speeds.
+struct Bounce {
+    double rebound_height = 0.0;
+    double velocity_ratio = 0.0;
+};
+
+Bounce first_bounce(double angle_deg, shapes::RockKind kind, double restitution, double dt,
+                    double height) {
+    engine::Scenario scenario = plane_scenario(angle_deg, kind, {0.5, restitution, 0.0}, dt);
+    scenario.rocks.front().release.height = height;
+    scenario.numerics.max_time = 1.5;
+    const std::vector<RockState> states = trajectory(scenario, 1e-6);
+    const Vec3 n = upward_normal(angle_deg);
+    // The release puts the lowest point `height` above the surface: contact is at this
+    // normal coordinate of the centre.
+    const double touching = states.front().position.dot(n) - height;
+    std::size_t k = 1;
+    while (k < states.size() &&
+           !(states[k - 1].velocity.dot(n) < 0.0 && states[k].velocity.dot(n) > 0.0)) {
+        ++k;
+    }
+    REQUIRE(k < states.size());
+    Bounce bounce;
+    bounce.velocity_ratio = states[k].velocity.dot(n) / -states[k - 1].velocity.dot(n);
+    double apex = states[k].position.dot(n);
+    for (std::size_t j = k; j < states.size() && states[j].velocity.dot(n) >= 0.0; ++j) {
+        apex = std::max(apex, states[j].position.dot(n));
+    }
+    bounce.rebound_height = apex - touching;
+    return bounce;
+}
+
+}  // namespace
+
+TEST_CASE("a sphere dropped on the flat rebounds to e^2 h", "[verification]") {
+    const double dt = GENERATE(1e-3, 5e-4);
+    const double e = GENERATE(0.3, 0.5, 0.8);
+    const double h = 1.0;
+    const Bounce bounce = first_bounce(0.0, shapes::RockKind::sphere, e, dt, h);
+    INFO("dt = " << dt << " s, e = " << e);
+    CHECK_THAT(bounce.rebound_height, WithinRel(e * e * h, 0.05));
+    CHECK_THAT(std::sqrt(bounce.rebound_height / h), WithinRel(e, 0.025));
+    CHECK_THAT(bounce.velocity_ratio, WithinRel(e, 0.025));
+}
+
+TEST_CASE("a sphere dropped on an incline rebounds to e^2 h along the normal", "[verification]") {
+    const double dt = GENERATE(1e-3, 5e-4);
+    const double e = GENERATE(0.3, 0.8);
+    const double angle = GENERATE(29.0, 43.0);
+    const double h = 1.0;
+    // Falling vertically onto the incline it meets it at sqrt(2 g h / cos t); the normal
+    // component then rises against g cos t to e^2 h.
+    const Bounce bounce = first_bounce(angle, shapes::RockKind::sphere, e, dt, h);
+    INFO("dt = " << dt << " s, e = " << e << ", angle = " << angle << " deg");
+    CHECK_THAT(bounce.rebound_height, WithinRel(e * e * h, 0.05));
+    CHECK_THAT(bounce.velocity_ratio, WithinRel(e, 0.025));
+}
+
+TEST_CASE("a block landing flat on a face rebounds to e^2 h", "[verification]") {
+    const double dt = GENERATE(1e-3, 5e-4);
+    const double e = GENERATE(0.3, 0.8);
+    const double h = 1.0;
+    const Bounce bounce = first_bounce(0.0, shapes::RockKind::massive, e, dt, h);
+    INFO("dt = " << dt << " s, e = " << e);
+    CHECK_THAT(bounce.rebound_height, WithinRel(e * e * h, 0.05));
+    CHECK_THAT(bounce.velocity_ratio, WithinRel(e, 0.025));
+}
