@@ -26,6 +26,7 @@ TEST_CASE("Soil column at rest: base force and at-rest lateral thrust", "[mpm][v
     add_box_particles<2>(column, axis_box(Vec3(0.0, -0.5, 0.0), Vec3(width, 0.5, height)), 0.05,
                          density);
     SolverSettings s;
+    s.threads = 1;
     s.cell_size = 0.1;
     s.domain_min = Vec3(-0.5, 0.0, -0.5);
     s.domain_max = Vec3(width + 0.5, 0.0, height + 0.5);

@@ -39,6 +39,7 @@ Slide slide(double angle_deg, double friction_angle_deg, double duration, double
     add_box_particles<2>(block, inclined_box(angle_deg, top + 0.1 * normal, Vec3(0.2, 0.5, 0.1)),
                          h / 2.0, 2000.0);
     SolverSettings s;
+    s.threads = 1;
     s.cell_size = h;
     s.domain_min = Vec3(-0.5, 0.0, -0.5);
     s.domain_max = Vec3(3.5, 0.0, 3.0);

@@ -17,6 +17,7 @@ namespace {
 
 SolverSettings settings_2d(double h) {
     SolverSettings s;
+    s.threads = 1;
     s.cell_size = h;
     s.domain_min = Vec3(0.0, 0.0, 0.0);
     s.domain_max = Vec3(2.0, 0.0, 2.0);
@@ -84,6 +85,7 @@ TEST_CASE("Linear momentum is conserved by internal forces", "[mpm][solver]") {
     }
     const Vec3 momentum = p.momentum();
     SolverSettings s;
+    s.threads = 1;
     s.cell_size = 0.1;
     s.domain_max = Vec3(2.0, 2.0, 2.0);
     s.gravity = Vec3::Zero();

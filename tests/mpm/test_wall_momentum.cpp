@@ -26,6 +26,7 @@ void check_wall_balance(double h) {
         v[0] = 3.0;
     }
     SolverSettings s;
+    s.threads = 1;
     s.cell_size = h;
     s.domain_min = Vec3(0.0, -0.8, -0.4);
     s.domain_max = Vec3(3.6, 0.8, 1.6);

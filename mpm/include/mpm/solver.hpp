@@ -112,7 +112,8 @@ class Solver {
     Particles<Dim>& particles() { return particles_; }
     /// The settings.
     const SolverSettings& settings() const { return settings_; }
-    /// Threads used.
+    /// Threads used: settings.threads (or the hardware's count), but at most one per 512
+    /// particles.
     int threads() const { return threads_; }
     /// Grid nodes allocated so far (block-sparse grid), for memory reports.
     long allocated_nodes() const;

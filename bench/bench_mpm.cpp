@@ -1,0 +1,91 @@
+// MPM benchmark: the seed soil flow (scenario C) in 3D, run with 1 and 2 threads.
+// Prints particle-updates per second per core (wall clock, and per CPU second, which is the
+// robust figure on a shared machine), the wall-clock time of the whole scenario and the
+// 2-thread speed-up, with the machine it ran on.
+//
+// Usage: bench_mpm [cell_size_m] [duration_s] [max_threads]
+#include "mpm/soil.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <sys/resource.h>
+#include <thread>
+
+using namespace rockfall::mpm;
+
+namespace {
+
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("model name", 0) == 0) {
+            return line.substr(line.find(':') + 2);
+        }
+    }
+    return "unknown";
+}
+
+double cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+           1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+struct Timing {
+    double wall;
+    double cpu;
+    double updates;
+    SoilOutcome outcome;
+};
+
+Timing run(const SoilScenario& scenario) {
+    const double cpu0 = cpu_seconds();
+    const auto t0 = std::chrono::steady_clock::now();
+    SoilOutcome outcome = run_soil(scenario);
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double cpu = cpu_seconds() - cpu0;
+    const double updates =
+        static_cast<double>(outcome.particles) * static_cast<double>(outcome.steps);
+    return {wall, cpu, updates, std::move(outcome)};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    SoilScenario scenario;
+    scenario.numerics.dimension = 3;
+    if (argc > 1) {
+        scenario.numerics.cell_size = std::atof(argv[1]);
+    }
+    scenario.output.duration = argc > 2 ? std::atof(argv[2]) : 6.0;
+    const int max_threads = argc > 3 ? std::atoi(argv[3]) : 2;
+
+    std::printf("machine: %u hardware threads, %s\n", std::thread::hardware_concurrency(),
+                cpu_model().c_str());
+    std::printf("scenario: seed soil flow, 3D, cell %.3f m, %d particles per cell edge, %.1f s\n",
+                scenario.numerics.cell_size, scenario.numerics.particles_per_cell,
+                scenario.output.duration);
+    double single_wall = 0.0;
+    for (int threads = 1; threads <= max_threads; ++threads) {
+        scenario.numerics.threads = threads;
+        const Timing t = run(scenario);
+        if (threads == 1) {
+            single_wall = t.wall;
+        }
+        std::printf(
+            "threads %d: %ld particles, %ld steps, wall %.2f s, cpu %.2f s; "
+            "%.2f M particle-updates/s/core (wall), %.2f M/s per cpu second; speed-up %.2f\n",
+            threads, t.outcome.particles, t.outcome.steps, t.wall, t.cpu,
+            t.updates / t.wall / threads / 1e6, t.updates / t.cpu / 1e6, single_wall / t.wall);
+        std::printf("           peak wall load %.1f N at %.2f s, runout %.2f m past the toe\n",
+                    t.outcome.peak_wall_force, t.outcome.peak_wall_force_time,
+                    t.outcome.deposit.runout_past_toe);
+    }
+    return 0;
+}
