@@ -24,6 +24,7 @@
 #include <string>
 #include <thread>
 #include <time.h>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -51,6 +52,17 @@ struct Stopwatch {
     double cpu() const { return thread_cpu_seconds() - cpu_start; }
 };
 
+// One trajectory as a method ran it.
+struct Sample {
+    double wall = 0.0;       // s
+    double cpu = 0.0;        // s
+    double simulated = 0.0;  // s
+    std::int64_t steps = 0;
+    double reach = 0.0;  // m
+    engine::StopReason stop = engine::StopReason::time_limit;
+    shapes::RockKind kind = shapes::RockKind::sphere;
+};
+
 // One method's totals over the rocks it ran.
 struct Tally {
     int trajectories = 0;
@@ -60,19 +72,23 @@ struct Tally {
     std::int64_t steps = 0;
     std::vector<double> reaches;  // m
     std::map<engine::StopReason, int> stops;
+    std::map<shapes::RockKind, std::pair<int, double>> by_kind;  // count, simulated time (s)
 
-    void add(const Stopwatch& watch, double simulated_time, std::int64_t step_count, double reach,
-             engine::StopReason stop) {
+    void add(const Sample& sample) {
         ++trajectories;
-        wall += watch.wall();
-        cpu += watch.cpu();
-        simulated += simulated_time;
-        steps += step_count;
-        reaches.push_back(reach);
-        ++stops[stop];
+        wall += sample.wall;
+        cpu += sample.cpu;
+        simulated += sample.simulated;
+        steps += sample.steps;
+        reaches.push_back(sample.reach);
+        ++stops[sample.stop];
+        auto& [count, time] = by_kind[sample.kind];
+        ++count;
+        time += sample.simulated;
     }
     double rate() const { return trajectories / wall; }
     double cpu_rate() const { return trajectories / cpu; }
+    double simulated_rate() const { return simulated / wall; }
 };
 
 std::string first_line_with(const std::filesystem::path& file, const std::string& key) {
@@ -123,10 +139,16 @@ void print_tally(const std::string& label, const Tally& t) {
               << "  wall time:             " << t.wall << " s (thread CPU " << t.cpu << " s)\n"
               << "  trajectories/s:        " << t.rate() << " (per CPU s: " << t.cpu_rate() << ")\n"
               << "  mean simulated time:   " << t.simulated / t.trajectories << " s ("
-              << t.simulated / t.wall << " simulated s per wall s)\n"
+              << t.simulated_rate() << " simulated s per wall s)\n"
               << "  steps:                 " << t.steps << " ("
               << 1e6 * t.wall / static_cast<double>(t.steps) << " us wall, "
               << 1e6 * t.cpu / static_cast<double>(t.steps) << " us CPU per step)\n"
+              << "  by kind (rocks) mean simulated time:";
+    for (const auto& [kind, entry] : t.by_kind) {
+        std::cout << " " << shapes::to_string(kind) << " (" << entry.first << ") "
+                  << entry.second / entry.first << " s";
+    }
+    std::cout << "\n"
               << "  reach past toe:        median " << median(t.reaches) << " m\n"
               << "  stop reasons:         ";
     for (const auto& [reason, count] : t.stops) {
@@ -165,11 +187,18 @@ struct Results {
 void run_engine(const engine::Scenario& scenario, std::uint64_t seed, bool in_subset, Results& r) {
     const Stopwatch watch;
     const engine::Outcome outcome = engine::simulate(scenario, seed);
+    const double wall = watch.wall(), cpu = watch.cpu();
     const engine::RockOutcome& rock = outcome.rocks.front();
-    r.engine.add(watch, outcome.simulated_time, outcome.coarse_steps + outcome.fine_steps,
-                 rock.reach, rock.stop);
+    const Sample sample{wall,
+                        cpu,
+                        outcome.simulated_time,
+                        outcome.coarse_steps + outcome.fine_steps,
+                        rock.reach,
+                        rock.stop,
+                        scenario.rocks.front().rock.kind};
+    r.engine.add(sample);
     if (in_subset) {
-        r.engine_subset.add(watch, outcome.simulated_time, 0, rock.reach, rock.stop);
+        r.engine_subset.add(sample);
     }
     r.coarse_steps += outcome.coarse_steps;
     r.fine_steps += outcome.fine_steps;
@@ -182,7 +211,9 @@ void run_engine(const engine::Scenario& scenario, std::uint64_t seed, bool in_su
 void run_bare(const engine::Scenario& scenario, std::uint64_t seed, double dt, Tally& tally) {
     const Stopwatch watch;
     const bench::BareRun bare = bench::run_bare_bullet(scenario, seed, dt);
-    tally.add(watch, bare.stop_time, bare.steps, bare.reach, bare.stop);
+    const double wall = watch.wall(), cpu = watch.cpu();
+    tally.add({wall, cpu, bare.stop_time, bare.steps, bare.reach, bare.stop,
+               scenario.rocks.front().rock.kind});
 }
 
 // (a) and (b) alternate rock by rock, and which goes first alternates too, so that a change
@@ -254,6 +285,14 @@ void print_report(const engine::Scenario& base, const Options& options, const Re
                     r.engine_subset.cpu_rate() / r.fine.cpu_rate(), 100.0);
         std::cout << "  a/c with (a) over all N rocks = " << r.engine.rate() / r.fine.rate()
                   << "\n";
+    }
+    // Trajectories of different lengths (the methods' contact physics differ) cost different
+    // amounts; simulated seconds per wall second compare the cost of the physics alone.
+    std::cout << "ratios (simulated s per wall s, for information)\n"
+              << "  a/b = " << r.engine.simulated_rate() / r.bare.simulated_rate() << "\n";
+    if (r.fine.trajectories > 0) {
+        std::cout << "  a/c (same rocks) = "
+                  << r.engine_subset.simulated_rate() / r.fine.simulated_rate() << "\n";
     }
 }
 
