@@ -1,0 +1,171 @@
+#include "mpm/soil.hpp"
+#include "mpm/vtk.hpp"
+#include "shapes/slope.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+using namespace rockfall::mpm;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+// The seed flow in 2D with the wall 0.5 m past the toe, so that the soil reaches it.
+SoilScenario quick_2d() {
+    SoilScenario s;
+    s.numerics.dimension = 2;
+    s.numerics.threads = 1;
+    s.slope.wall.distance_from_toe = 0.5;
+    s.output.duration = 5.0;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("Soil scenario defaults are the seed's Table 1", "[mpm][soil]") {
+    const SoilScenario s;
+    CHECK(s.material.youngs_modulus == 1.0e6);
+    CHECK(s.density == 1640.0);
+    CHECK(s.material.poisson_ratio == 0.30);
+    CHECK(s.material.friction_angle_deg == 34.6);
+    CHECK(s.material.dilatancy_angle_deg == 0.0);
+    CHECK(s.material.cohesion == 2100.0);
+    CHECK(s.material.tensile_strength == 0.0);
+    CHECK(s.boundaries.basal_friction_angle_deg == 30.0);
+    CHECK(s.numerics.cell_size == 0.20);
+    CHECK(s.release.bed_angle_deg == 66.0);
+    CHECK_NOTHROW(validate(s));
+}
+
+TEST_CASE("Soil scenario validation lists every problem", "[mpm][soil]") {
+    SoilScenario s;
+    s.release.thickness = -0.1;
+    s.numerics.dimension = 4;
+    s.material.poisson_ratio = 0.7;
+    try {
+        validate(s);
+        FAIL("validate accepted an invalid scenario");
+    } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        CHECK_THAT(what, Catch::Contains("release.thickness = -0.1 m: must be > 0"));
+        CHECK_THAT(what, Catch::Contains("numerics.dimension = 4: must be 2 or 3"));
+        CHECK_THAT(what, Catch::Contains("material.poisson_ratio"));
+    }
+}
+
+TEST_CASE("Moving average keeps constants and spreads a spike over the window", "[mpm][soil]") {
+    const std::vector<double> flat(9, 2.5);
+    for (const double v : moving_average(flat, 5)) {
+        CHECK_THAT(v, WithinRel(2.5, 1e-15));
+    }
+    std::vector<double> spike(9, 0.0);
+    spike[4] = 1.0;
+    const std::vector<double> smooth = moving_average(spike, 5);
+    CHECK_THAT(smooth[2], WithinRel(0.2, 1e-15));
+    CHECK_THAT(smooth[6], WithinRel(0.2, 1e-15));
+    CHECK(smooth[1] == 0.0);
+    CHECK_THAT(std::accumulate(smooth.begin(), smooth.end(), 0.0), WithinRel(1.0, 1e-15));
+}
+
+TEST_CASE("Quick 2D soil flow loads the wall and heaps against it", "[mpm][soil]") {
+    const SoilScenario s = quick_2d();
+    int frames = 0;
+    const SoilOutcome o = run_soil(s, [&](const ParticleFrame& f) {
+        CHECK(f.position.size() == f.mass.size());
+        ++frames;
+    });
+    REQUIRE(o.status == SoilStatus::completed);
+    CHECK(o.dimension == 2);
+    CHECK(frames == 51);
+    CHECK_THAT(o.mass, WithinRel(s.density * s.release.length * s.release.thickness, 1e-12));
+    REQUIRE(o.sample_time.size() == 500);
+    CHECK(o.wall_impulse > 0.0);
+    // The sampled load carries the whole impulse.
+    const double sampled =
+        std::accumulate(o.wall_force.begin(), o.wall_force.end(), 0.0) * s.output.sample_interval;
+    CHECK_THAT(sampled, WithinRel(o.wall_impulse, 1e-9));
+    CHECK(o.peak_wall_force > 0.0);
+    CHECK(o.peak_wall_force_filtered <= o.peak_wall_force);
+    // The soil stops against the wall.
+    const rockfall::shapes::Slope slope(s.slope);
+    CHECK(o.deposit.runout_x <= slope.wall_x() + 0.05);
+    CHECK(o.deposit.runout_x > slope.toe_x());
+    CHECK(o.centre_of_mass.back().z() < o.centre_of_mass.front().z() - 5.0);
+    CHECK(o.kinetic_energy.back() <
+          1e-3 * *std::max_element(o.kinetic_energy.begin(), o.kinetic_energy.end()));
+    const double height =
+        *std::max_element(o.deposit.profile_height.begin(), o.deposit.profile_height.end());
+    CHECK(height > s.release.thickness);
+}
+
+TEST_CASE("A tilting bed holds the soil until it is steeper than the bed friction", "[mpm][soil]") {
+    SoilScenario s = quick_2d();
+    s.release.initial_bed_angle_deg = 0.0;
+    s.release.tilt_duration = 3.0;
+    s.output.duration = 3.0;
+    s.output.sample_interval = 0.05;
+    const SoilOutcome o = run_soil(s);
+    REQUIRE(o.status == SoilStatus::completed);
+    // Until 22 deg (t = 1 s) the soil turns with the bed: its centre of mass keeps its distance
+    // from the hinge (the crown) and stays behind it.
+    const rockfall::shapes::Slope slope(s.slope);
+    const Vec3 hinge(0.0, 0.0, slope.profile().front().y());
+    const double start = (o.centre_of_mass.front() - hinge).norm();
+    const std::size_t one_second = 19;
+    REQUIRE(o.sample_time[one_second] == Approx(1.0));
+    WARN("distance from the hinge: " << start << " m at 0 s, "
+                                     << (o.centre_of_mass[one_second] - hinge).norm()
+                                     << " m at 1 s; x at 3 s: " << o.centre_of_mass.back().x());
+    CHECK_THAT((o.centre_of_mass[one_second] - hinge).norm(), WithinRel(start, 0.02));
+    CHECK(o.centre_of_mass[one_second].x() < hinge.x());
+    // By the end (66 deg) it has slid off the bed onto the slope.
+    CHECK(o.centre_of_mass.back().x() > hinge.x());
+}
+
+TEST_CASE("3D seed flow leaves the bed and moves down the slope", "[mpm][soil]") {
+    SoilScenario s;
+    s.numerics.threads = 1;
+    s.output.duration = 1.0;
+    const SoilOutcome o = run_soil(s);
+    REQUIRE(o.status == SoilStatus::completed);
+    CHECK(o.dimension == 3);
+    CHECK(o.particles == 35 * 29 * 3);
+    CHECK(o.centre_of_mass.back().x() > o.centre_of_mass.front().x() + 0.5);
+    CHECK_THAT(o.centre_of_mass.back().y(), WithinAbs(0.0, 1e-6));
+    CHECK(o.front_x.back() > 1.0);
+}
+
+TEST_CASE("VTK writer: legacy binary POLYDATA of the expected size", "[mpm][soil]") {
+    ParticleFrame frame;
+    frame.time = 1.5;
+    for (int i = 0; i < 3; ++i) {
+        frame.position.emplace_back(i, 0.0, 1.0);
+        frame.velocity.emplace_back(0.0, 0.0, -i);
+        frame.mass.push_back(1.0);
+        frame.mean_stress.push_back(-100.0);
+        frame.deviatoric_stress.push_back(50.0);
+        frame.plastic_shear_strain.push_back(0.0);
+    }
+    const auto path = std::filesystem::temp_directory_path() / "rockfall_mpm_test_frame.vtk";
+    write_vtk(path, frame);
+    std::ifstream in(path, std::ios::binary);
+    std::string first;
+    std::string second;
+    std::getline(in, first);
+    std::getline(in, second);
+    CHECK(first == "# vtk DataFile Version 3.0");
+    CHECK_THAT(second, Catch::Contains("t = 1.5 s"));
+    // Points and velocities (3 x 3 doubles each), vertices (3 x 2 int32), 4 scalar fields.
+    const auto binary = 2 * 3 * 3 * 8 + 3 * 2 * 4 + 4 * 3 * 8;
+    CHECK(std::filesystem::file_size(path) > static_cast<std::uintmax_t>(binary));
+    CHECK(std::filesystem::file_size(path) < static_cast<std::uintmax_t>(binary + 400));
+    std::filesystem::remove(path);
+    CHECK_THROWS_AS(write_vtk("/nonexistent-dir/frame.vtk", frame), std::runtime_error);
+}
