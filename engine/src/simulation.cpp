@@ -49,6 +49,8 @@ struct RockRun {
     bool touching = false;
     // Fine step fixed at first touch for the whole contact.
     double contact_step = 0.0;
+    // Found deeper in the wall than half its size: it went through the contact.
+    bool inside_wall = false;
 };
 
 // Step size of the coming step and whether the near-wall refinement chose it.
@@ -81,6 +83,7 @@ class Run {
 Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options)
     : scenario_(scenario), slope_(scenario.slope), world_(scenario, slope_) {
     assert(!scenario.rocks.empty());
+    assert(options.trajectory_interval > 0.0);
     Random random(seed);
     rocks_.reserve(scenario.rocks.size());
     outcome_.rocks.resize(scenario.rocks.size());
@@ -113,6 +116,7 @@ Outcome Run::execute() {
     while (active_count_ > 0) {
         wall_contacts();
         const StepChoice step = step_size();
+        // Phase 3: the physics step.
         world_.step(step.dt);
         time_ += step.dt;
         ++(step.fine ? outcome_.fine_steps : outcome_.coarse_steps);
@@ -142,6 +146,10 @@ void Run::wall_contacts() {
         const bool first_touch = overlap && !rock.touching;
         rock.touching = overlap.has_value();
         if (!overlap) {
+            continue;
+        }
+        if (overlap->depth > 0.5 * rock.geometry.nominal_size) {
+            rock.inside_wall = true;
             continue;
         }
         const Vec3 point_velocity =
@@ -193,7 +201,9 @@ void Run::record(double dt) {
         rock.body_state = body;
         rock.state = after;
         rock.gap = gap;
-        if (const std::optional<StopReason> reason = rock.stop_rule.check(after, dt)) {
+        if (rock.inside_wall) {
+            stop(i, StopReason::numerical_failure);
+        } else if (const std::optional<StopReason> reason = rock.stop_rule.check(after, dt)) {
             stop(i, *reason);
         }
     }

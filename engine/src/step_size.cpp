@@ -44,9 +44,12 @@ double approach_step(const WallContactLaw& law, const WallApproach& approach, in
     if (approach.closing_speed <= 0.0) {
         return coarse_dt;
     }
-    const double time_to_reach = (approach.gap - kReserve) / approach.closing_speed;
-    const double fine = fine_step(law, approach.approach_speed, steps_per_contact, coarse_dt);
-    return std::clamp(0.5 * time_to_reach, fine, coarse_dt);
+    const double half_time_to_reach = 0.5 * (approach.gap - kReserve) / approach.closing_speed;
+    if (half_time_to_reach >= coarse_dt) {
+        return coarse_dt;
+    }
+    return std::max(half_time_to_reach,
+                    fine_step(law, approach.approach_speed, steps_per_contact, coarse_dt));
 }
 
 }  // namespace rockfall::engine

@@ -72,7 +72,10 @@ struct World::Impl {
     btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
 
     Impl(const shapes::Slope& slope, std::size_t rock_count)
-        : configuration(pool_sizes(rock_count)), broadphase(world_min(slope), world_max(slope)) {
+        : configuration(pool_sizes(rock_count)),
+          // No ray casts: no need for the dynamic-tree copy Bullet keeps to accelerate them.
+          broadphase(world_min(slope), world_max(slope), handle_count(slope, rock_count), nullptr,
+                     true) {
         for (const auto& [a, b] :
              {std::pair{CONVEX_HULL_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE},
               std::pair{BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE},
@@ -101,6 +104,13 @@ struct World::Impl {
         for (StaticSolid& solid : statics) {
             world.removeRigidBody(solid.body.get());
         }
+    }
+
+    // Bullet's default of 16384 broadphase handles is cleared at every world's construction;
+    // a run needs one per static solid and rock.
+    static unsigned short handle_count(const shapes::Slope& slope, std::size_t rock_count) {
+        return static_cast<unsigned short>(
+            std::min<std::size_t>(16384, slope.solids().size() + rock_count + 2));
     }
 
     // Broadphase bounds: the slope's extent with room for rocks flying off it; objects beyond
