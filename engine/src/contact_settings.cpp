@@ -96,10 +96,13 @@ void install_material_combiners() {
 void configure_solver(btContactSolverInfo& info, const Numerics& numerics) {
     info.m_numIterations = numerics.solver_iterations;
     // Split impulse: penetration is removed by a separate position-only impulse, so position
-    // correction never adds kinetic energy. Bullet splits only contacts deeper than this
-    // (signed distance below it); +infinity splits all of them.
+    // correction never adds kinetic energy. Bullet splits a contact only when its signed
+    // distance is below this threshold (default -0.04 m) and corrects shallower ones through the
+    // velocity (Baumgarte), which raised a drop test's e = 0.3 to 0.49 at 1 ms; +infinity
+    // splits every contact.
     info.m_splitImpulse = 1;
     info.m_splitImpulsePenetrationThreshold = BT_LARGE_FLOAT;
+    // Share of the penetration the split impulse removes per step.
     info.m_erp2 = 0.8;
     // Bounces below this normal speed are dropped (m/s): far below any bounce that matters,
     // above the g dt a resting contact gains per step (0.01 m/s at 1 ms).
@@ -107,7 +110,8 @@ void configure_solver(btContactSolverInfo& info, const Numerics& numerics) {
     // Two friction directions per contact: with one, a rolling contact (zero slip, so no
     // velocity to align with) gets an arbitrary direction and slips along the other.
     info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
-    // Stop iterating once impulses change by less than 1 um/s: one rock converges in a few.
+    // Stop iterating once an iteration changes no velocity by more than 1e-4 m/s (the residual
+    // is squared): a single rock's contacts converge in a few iterations.
     info.m_leastSquaresResidualThreshold = 1e-8;
 }
 
