@@ -5,9 +5,9 @@
 namespace rockfall::mpm::detail {
 namespace {
 
-// Spin iterations before sleeping: a few microseconds, enough to catch the next phase of a
-// step on an idle machine.
-constexpr int kSpins = 4000;
+// Spin iterations before sleeping (tens of microseconds): enough to catch the next phase of a
+// step on an idle machine, short enough not to steal much time on a busy one.
+constexpr int kSpins = 1000;
 
 inline void relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -33,17 +33,31 @@ ThreadPool::~ThreadPool() {
     }
 }
 
-void ThreadPool::work() {
-    for (int i = next_.fetch_add(1, std::memory_order_relaxed); i < count_;
-         i = next_.fetch_add(1, std::memory_order_relaxed)) {
-        (*task_)(i);
+void ThreadPool::work(std::uint32_t generation) {
+    for (;;) {
+        std::uint64_t ticket = ticket_.load(std::memory_order_acquire);
+        if (static_cast<std::uint32_t>(ticket >> 32) != generation) {
+            return;
+        }
+        const auto index = static_cast<int>(ticket & 0xffffffffu);
+        const std::function<void(int)>* task = task_.load(std::memory_order_acquire);
+        if (index >= count_.load(std::memory_order_acquire)) {
+            return;
+        }
+        // The claim fails if another thread took this index or a newer run started; then the
+        // task and count read above may be stale and are not used.
+        if (!ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel)) {
+            continue;
+        }
+        (*task)(index);
+        done_.fetch_add(1, std::memory_order_release);
     }
 }
 
 void ThreadPool::worker_loop() {
-    unsigned seen = 0;
+    std::uint32_t seen = 0;
     for (;;) {
-        unsigned now = generation_.load(std::memory_order_acquire);
+        std::uint32_t now = generation_.load(std::memory_order_acquire);
         for (int spin = 0; now == seen && spin < kSpins; ++spin) {
             relax();
             now = generation_.load(std::memory_order_acquire);
@@ -56,10 +70,7 @@ void ThreadPool::worker_loop() {
         if (stop_.load(std::memory_order_relaxed)) {
             return;
         }
-        work();
-        if (remaining_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
-            remaining_.notify_one();
-        }
+        work(now);
     }
 }
 
@@ -70,21 +81,22 @@ void ThreadPool::run(int count, const std::function<void(int)>& task) {
         }
         return;
     }
-    task_ = &task;
-    count_ = count;
-    next_.store(0, std::memory_order_relaxed);
-    remaining_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
-    generation_.fetch_add(1, std::memory_order_release);
+    const std::uint32_t generation = generation_.load(std::memory_order_relaxed) + 1;
+    task_.store(&task, std::memory_order_relaxed);
+    count_.store(count, std::memory_order_relaxed);
+    done_.store(0, std::memory_order_relaxed);
+    ticket_.store(static_cast<std::uint64_t>(generation) << 32, std::memory_order_release);
+    generation_.store(generation, std::memory_order_release);
     generation_.notify_all();
-    work();
-    int left = remaining_.load(std::memory_order_acquire);
-    for (int spin = 0; left != 0 && spin < kSpins; ++spin) {
-        relax();
-        left = remaining_.load(std::memory_order_acquire);
-    }
-    while (left != 0) {
-        remaining_.wait(left, std::memory_order_acquire);
-        left = remaining_.load(std::memory_order_acquire);
+    work(generation);
+    // Every index is claimed; wait for the claimed tasks still running on workers.
+    for (int spin = 0; done_.load(std::memory_order_acquire) < count; ++spin) {
+        if (spin < kSpins) {
+            relax();
+        } else {
+            // The worker holding a task may be descheduled: let it run.
+            std::this_thread::yield();
+        }
     }
 }
 

@@ -1,10 +1,14 @@
 #pragma once
-// A small fork-join pool for the solver's phases. Workers spin briefly, then sleep on an
-// atomic wait (a futex), so a busy or oversubscribed machine does not stall the step the way
-// long barrier spins do. Tasks must be independent: which thread runs a task never changes a
-// result.
+// A small fork-join pool for the solver's phases. The calling thread takes part and claims
+// tasks like the workers; it waits only for tasks a worker has claimed and not finished, never
+// for a worker that has not woken up, so a busy or oversubscribed machine degrades towards the
+// single-thread speed instead of stalling at barriers. Idle workers spin briefly, then sleep on
+// an atomic wait (a futex). Tasks must be independent: which thread runs a task never changes
+// a result.
 
+#include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <thread>
 #include <vector>
@@ -32,15 +36,18 @@ class ThreadPool {
     }
 
   private:
-    void work();
+    // Claims and runs tasks of `generation` until none is left or a newer run has started.
+    void work(std::uint32_t generation);
     void worker_loop();
 
     std::vector<std::thread> workers_;
-    const std::function<void(int)>* task_ = nullptr;
-    int count_ = 0;
-    std::atomic<int> next_{0};
-    std::atomic<int> remaining_{0};
-    std::atomic<unsigned> generation_{0};
+    std::atomic<const std::function<void(int)>*> task_{nullptr};
+    std::atomic<int> count_{0};
+    // Generation in the high 32 bits, next task index in the low 32 bits: a claim succeeds
+    // only for the generation its thread was woken for.
+    std::atomic<std::uint64_t> ticket_{0};
+    std::atomic<int> done_{0};
+    std::atomic<std::uint32_t> generation_{0};
     std::atomic<bool> stop_{false};
 };
 
