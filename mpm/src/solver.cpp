@@ -73,10 +73,6 @@ constexpr int kParticleGrain = 1024;
 // Storage blocks per task in the grid phases.
 constexpr int kBlockGrain = 8;
 
-}  // namespace
-
-namespace {
-
 void require(bool ok, const char* field, double value, const char* unit, const char* range) {
     if (!ok) {
         std::ostringstream message;
