@@ -11,8 +11,8 @@ namespace {
 // about the separating normal).
 constexpr int kPerturbations = 3;
 
-// Two Bullet convex-convex algorithms sharing one manifold: the perturbing one for the first
-// step of a contact, the plain one afterwards.
+// Two Bullet convex-convex algorithms sharing one manifold: the plain one every step, the
+// perturbing one in addition at the step a contact appears.
 class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
   public:
     HullContactAlgorithm(const btCollisionAlgorithmConstructionInfo& info,
@@ -35,9 +35,13 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
                           const btCollisionObjectWrapper* body1, const btDispatcherInfo& info,
                           btManifoldResult* result) override {
         result->setPersistentManifold(manifold_);
-        btConvexConvexAlgorithm& algorithm =
-            manifold_->getNumContacts() == 0 ? *perturbing_ : *plain_;
-        algorithm.processCollision(body0, body1, info, result);
+        const bool was_empty = manifold_->getNumContacts() == 0;
+        plain_->processCollision(body0, body1, info, result);
+        if (was_empty && manifold_->getNumContacts() > 0) {
+            // A new contact: find the rest of a touching face or edge now. Pairs that stay
+            // apart (most pairs the broadphase reports) never pay for the perturbed queries.
+            perturbing_->processCollision(body0, body1, info, result);
+        }
         // The inner algorithms do not own the manifold, so they leave its refresh to us.
         result->refreshContactPoints();
     }

@@ -5,9 +5,9 @@
 // the following steps. At an impact that is too late: a block landing on a face is hit at one
 // corner first and loses the bounce to rotation (measured: e = 0.5 came out as 0.42 at 1 ms and
 // 0.39 at 0.5 ms). Bullet can perturb the pair to find the whole face at once, but doing so in
-// every step with fewer than three points doubles the cost of a tumbling rock. This algorithm
-// perturbs only at the first step of a contact (an empty manifold) and runs plain GJK while
-// the contact persists.
+// every step with fewer than three points (also for pairs that are apart) doubles the cost of
+// a tumbling rock. This algorithm runs plain GJK every step and perturbs only in the step where
+// a contact appears in an empty manifold.
 
 #include <btBulletCollisionCommon.h>
 
