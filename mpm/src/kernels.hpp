@@ -107,21 +107,24 @@ inline void scatter_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& fir
             }
         }
     } else {
+        // Packed 4-vectors (momentum, mass): Eigen emits SIMD pairs where the scalar loop
+        // stays scalar; maps carry no per-coefficient checks.
+        using Packed = Eigen::Vector4d;
+        const Eigen::Map<const Packed> base(q0);
+        const Eigen::Map<const Packed> along_i(step[0]);
+        const Eigen::Map<const Packed> along_j(step[1]);
+        const Eigen::Map<const Packed> along_k(step[2]);
         for (int i = 0; i < 3; ++i) {
             for (int j = 0; j < 3; ++j) {
-                double qij[N];
-                for (int r = 0; r < N; ++r) {
-                    qij[r] = q0[r] + i * step[0][r] + j * step[1][r];
-                }
+                const Packed qij = base + i * along_i + j * along_j;
                 const double wij = s.w[0][i] * s.w[1][j];
                 double* node =
                     out + N * (((l[0] + i) * kLocalEdge + (l[1] + j)) * kLocalEdge + l[2]);
-                for (int k = 0; k < 3; ++k) {
-                    const double weight = wij * s.w[2][k];
-                    for (int r = 0; r < N; ++r) {
-                        node[N * k + r] += weight * (qij[r] + k * step[2][r]);
-                    }
-                }
+                Eigen::Map<Packed, Eigen::Aligned16>(node) += (wij * s.w[2][0]) * qij;
+                Eigen::Map<Packed, Eigen::Aligned16>(node + N) +=
+                    (wij * s.w[2][1]) * (qij + along_k);
+                Eigen::Map<Packed, Eigen::Aligned16>(node + 2 * N) +=
+                    (wij * s.w[2][2]) * (qij + 2.0 * along_k);
             }
         }
     }
