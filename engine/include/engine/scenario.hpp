@@ -54,7 +54,7 @@ struct WallContact {
     /// each hit's impact speed). Ignored by the Hertz model.
     double linear_stiffness = 0.0;
     /// Time steps per estimated contact duration near the wall, in [20, 1000].
-    int steps_per_contact = 40;
+    int steps_per_contact = 100;
 };
 
 /// One rock: its shape, size and material.
