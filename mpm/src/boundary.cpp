@@ -8,21 +8,6 @@
 #include <numbers>
 
 namespace rockfall::mpm {
-namespace {
-
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
-// Rotation about +y by `angle` radians (right-handed): x -> (cos, 0, -sin).
-Mat3 rotation_y(double angle) {
-    const double c = std::cos(angle);
-    const double s = std::sin(angle);
-    Mat3 r;
-    r << c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c;
-    return r;
-}
-
-}  // namespace
-
 double HingedBoundary::angle_deg(double t) const {
     if (t <= start_time) {
         return start_angle_deg;

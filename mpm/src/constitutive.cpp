@@ -10,8 +10,6 @@
 namespace rockfall::mpm {
 namespace {
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
 void require(bool ok, const char* where, const char* field, double value, const char* unit,
              const char* range) {
     if (!ok) {

@@ -14,8 +14,6 @@
 namespace rockfall::mpm {
 namespace {
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
 // Collects every problem of a scenario as `field = value unit: must be range`.
 class Problems {
   public:
@@ -119,15 +117,6 @@ shapes::OrientedBox box_between(const Vec3& lo, const Vec3& hi) {
     box.center = 0.5 * (lo + hi);
     box.half_extents = 0.5 * (hi - lo);
     return box;
-}
-
-// Rotation about +y (right-handed), as HingedBoundary uses.
-Mat3 rotation_y(double angle) {
-    const double c = std::cos(angle);
-    const double s = std::sin(angle);
-    Mat3 r;
-    r << c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c;
-    return r;
 }
 
 }  // namespace

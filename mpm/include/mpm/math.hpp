@@ -8,6 +8,9 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+#include <numbers>
+
 namespace rockfall::mpm {
 
 /// A point or vector in the solver's space (Dim = 2 or 3), m or m/s.
@@ -54,6 +57,18 @@ Mat3 embed(const Mat<Dim>& m) {
         out.template topLeftCorner<2, 2>() = m;
         return out;
     }
+}
+
+/// Degrees to radians.
+inline double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+/// Rotation about the scene's +y axis by `angle` rad (right-handed: x -> (cos, 0, -sin)).
+inline Mat3 rotation_y(double angle) {
+    const double c = std::cos(angle);
+    const double s = std::sin(angle);
+    Mat3 r;
+    r << c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c;
+    return r;
 }
 
 }  // namespace rockfall::mpm
