@@ -12,7 +12,6 @@ using Catch::Matchers::WithinRel;
 
 namespace {
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
 double mean_stress(const Mat3& s) { return s.trace() / 3.0; }
 
