@@ -12,7 +12,6 @@ using Catch::Matchers::WithinRel;
 
 namespace {
 
-
 double mean_stress(const Mat3& s) { return s.trace() / 3.0; }
 
 double deviatoric_q(const Mat3& s) {
