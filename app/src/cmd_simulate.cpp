@@ -1,5 +1,11 @@
 // `rockfall simulate`: one release of a scenario, summary or JSON, optional trajectory CSV.
 
+#include "commands.hpp"
+#include "report.hpp"
+
+#include "app/scenario_file.hpp"
+#include "engine/simulation.hpp"
+
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -8,11 +14,6 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
-
-#include "app/scenario_file.hpp"
-#include "commands.hpp"
-#include "engine/simulation.hpp"
-#include "report.hpp"
 
 namespace rockfall::app {
 namespace {
@@ -28,7 +29,7 @@ struct SimulateArgs {
 /// Writes trajectory rows to `path` through a temporary file renamed at the end, so that an
 /// interrupted run never leaves a half-written CSV under the requested name.
 class TrajectoryCsv {
-public:
+  public:
     explicit TrajectoryCsv(std::filesystem::path path)
         : path_(std::move(path)), tmp_(path_.string() + ".part"), out_(tmp_) {
         if (!out_) {
@@ -49,7 +50,8 @@ public:
     }
     void commit() {
         out_.close();
-        if (!out_) throw std::runtime_error("writing trajectory file '" + tmp_.string() + "' failed");
+        if (!out_)
+            throw std::runtime_error("writing trajectory file '" + tmp_.string() + "' failed");
         std::filesystem::rename(tmp_, path_);
     }
     ~TrajectoryCsv() {
@@ -60,7 +62,7 @@ public:
         }
     }
 
-private:
+  private:
     std::filesystem::path path_;
     std::filesystem::path tmp_;
     std::ofstream out_;
@@ -85,7 +87,8 @@ void run_simulate(const SimulateArgs& args) {
         std::cout << outcome_json(file.scenario, outcome, info).dump(2) << '\n';
     } else {
         print_summary(std::cout, file.scenario, outcome, info);
-        if (!args.trajectory.empty()) std::cout << "trajectory written to " << args.trajectory << '\n';
+        if (!args.trajectory.empty())
+            std::cout << "trajectory written to " << args.trajectory << '\n';
     }
 }
 

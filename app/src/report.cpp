@@ -1,10 +1,10 @@
 #include "report.hpp"
 
+#include "shapes/rocks.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <string>
-
-#include "shapes/rocks.hpp"
 
 namespace rockfall::app {
 namespace {
@@ -36,11 +36,10 @@ void print_stations(std::ostream& out, const engine::RockOutcome& rock) {
             out << "  not reached\n";
             continue;
         }
-        out << "  t " << fmt("%.3f s", s.time) << "  v " << fmt("%.2f m/s", s.speed)
-            << "  v_par " << fmt("%.2f m/s", s.parallel_speed) << "  w "
-            << fmt("%.1f rad/s", s.angular_speed) << "  bounce "
-            << fmt("%.3f m", s.bounce_height) << "  Cr " << fmt("%.2f", s.rolling_coefficient)
-            << '\n';
+        out << "  t " << fmt("%.3f s", s.time) << "  v " << fmt("%.2f m/s", s.speed) << "  v_par "
+            << fmt("%.2f m/s", s.parallel_speed) << "  w " << fmt("%.1f rad/s", s.angular_speed)
+            << "  bounce " << fmt("%.3f m", s.bounce_height) << "  Cr "
+            << fmt("%.2f", s.rolling_coefficient) << '\n';
     }
     if (std::isfinite(rock.velocity_change)) {
         out << "  V' = (b - a) / a = " << fmt("%.3f", rock.velocity_change)
@@ -58,8 +57,7 @@ void print_hits(std::ostream& out, const engine::RockOutcome& rock) {
             << fmt("%.1f N s", h.normal_impulse) << ", peak normal force "
             << fmt("%.1f kN", h.peak_normal_force / 1e3) << ", duration "
             << fmt("%.3f ms", (h.end_time - h.start_time) * 1e3) << ", kinetic energy "
-            << fmt("%.1f J", h.energy_before) << " -> " << fmt("%.1f J", h.energy_after)
-            << '\n';
+            << fmt("%.1f J", h.energy_before) << " -> " << fmt("%.1f J", h.energy_after) << '\n';
     }
 }
 
@@ -87,9 +85,9 @@ void print_summary(std::ostream& out, const engine::Scenario& scenario,
         print_stations(out, rock);
         print_hits(out, rock);
     }
-    out << "simulated " << fmt("%.3f s", outcome.simulated_time) << " in "
-        << outcome.coarse_steps << " coarse + " << outcome.fine_steps
-        << " fine (near-wall) steps; runtime " << fmt("%.3f s", info.runtime) << '\n';
+    out << "simulated " << fmt("%.3f s", outcome.simulated_time) << " in " << outcome.coarse_steps
+        << " coarse + " << outcome.fine_steps << " fine (near-wall) steps; runtime "
+        << fmt("%.3f s", info.runtime) << '\n';
 }
 
 nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outcome& outcome,
@@ -113,22 +111,23 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
         for (const auto& h : rock.wall_hits) {
             nlohmann::json history = nlohmann::json::array();
             for (const auto& f : h.history) history.push_back({f.time, f.normal, f.tangential});
-            hits.push_back({{"start_time_s", h.start_time},
-                            {"end_time_s", h.end_time},
-                            {"point_m", vec_json(h.point)},
-                            {"normal_speed_m_s", h.normal_speed},
-                            {"normal_impulse_N_s", h.normal_impulse},
-                            {"tangential_impulse_N_s", vec_json(h.tangential_impulse)},
-                            {"velocity_before_m_s", vec_json(h.velocity_before)},
-                            {"velocity_after_m_s", vec_json(h.velocity_after)},
-                            {"angular_velocity_before_rad_s", vec_json(h.angular_velocity_before)},
-                            {"angular_velocity_after_rad_s", vec_json(h.angular_velocity_after)},
-                            {"energy_before_J", h.energy_before},
-                            {"energy_after_J", h.energy_after},
-                            {"peak_normal_force_N", h.peak_normal_force},
-                            {"peak_time_s", h.peak_time},
-                            {"force_history", {{"columns", {"time_s", "normal_N", "tangential_N"}},
-                                               {"rows", history}}}});
+            hits.push_back(
+                {{"start_time_s", h.start_time},
+                 {"end_time_s", h.end_time},
+                 {"point_m", vec_json(h.point)},
+                 {"normal_speed_m_s", h.normal_speed},
+                 {"normal_impulse_N_s", h.normal_impulse},
+                 {"tangential_impulse_N_s", vec_json(h.tangential_impulse)},
+                 {"velocity_before_m_s", vec_json(h.velocity_before)},
+                 {"velocity_after_m_s", vec_json(h.velocity_after)},
+                 {"angular_velocity_before_rad_s", vec_json(h.angular_velocity_before)},
+                 {"angular_velocity_after_rad_s", vec_json(h.angular_velocity_after)},
+                 {"energy_before_J", h.energy_before},
+                 {"energy_after_J", h.energy_after},
+                 {"peak_normal_force_N", h.peak_normal_force},
+                 {"peak_time_s", h.peak_time},
+                 {"force_history",
+                  {{"columns", {"time_s", "normal_N", "tangential_N"}}, {"rows", history}}}});
         }
         rocks.push_back({{"kind", shapes::to_string(spec.kind)},
                          {"size_m", spec.size},

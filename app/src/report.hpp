@@ -2,12 +2,12 @@
 /// Human-readable and JSON reports of a simulation outcome. Every number carries its unit:
 /// in text after the value, in JSON as a key suffix (`reach_m`, `peak_normal_force_N`).
 
-#include <ostream>
+#include "engine/outcome.hpp"
+#include "engine/scenario.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include "engine/outcome.hpp"
-#include "engine/scenario.hpp"
+#include <ostream>
 
 namespace rockfall::app {
 

@@ -1,12 +1,12 @@
 #pragma once
 /// What one simulation produces: per-rock outcomes, stations and wall hits. SI units.
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
 #include <cstdint>
 #include <string_view>
 #include <vector>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 
 namespace rockfall::engine {
 
@@ -14,9 +14,9 @@ using Vec3 = Eigen::Vector3d;
 
 /// Why a rock's simulation ended.
 enum class StopReason {
-    at_rest,       ///< speed below rest_speed for rest_duration
-    left_domain,   ///< past the end of the slope, off its sides, or below it
-    time_limit,    ///< max_time reached while still moving
+    at_rest,            ///< speed below rest_speed for rest_duration
+    left_domain,        ///< past the end of the slope, off its sides, or below it
+    time_limit,         ///< max_time reached while still moving
     numerical_failure,  ///< non-finite state or a rock inside a solid
 };
 

@@ -1,13 +1,13 @@
 #pragma once
 /// A validated rockfall scenario: plain structs with documented defaults, SI units.
 
-#include <string>
-#include <vector>
+#include "shapes/rocks.hpp"
+#include "shapes/slope.hpp"
 
 #include <Eigen/Core>
 
-#include "shapes/rocks.hpp"
-#include "shapes/slope.hpp"
+#include <string>
+#include <vector>
 
 namespace rockfall::engine {
 

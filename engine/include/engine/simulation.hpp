@@ -1,12 +1,12 @@
 #pragma once
 /// Running one release: a fresh world per run, fixed steps, recorders outside the step.
 
+#include "engine/outcome.hpp"
+#include "engine/scenario.hpp"
+
 #include <cstdint>
 #include <functional>
 #include <memory>
-
-#include "engine/outcome.hpp"
-#include "engine/scenario.hpp"
 
 namespace rockfall::engine {
 
