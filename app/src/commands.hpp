@@ -13,4 +13,7 @@ inline constexpr int exit_failure = 1;
 /// `rockfall simulate SCENARIO`: one release with a readable summary or JSON.
 void register_simulate(CLI::App& app);
 
+/// `rockfall soil SCENARIO`: one soil flow (MPM) with the wall load history, runout and deposit.
+void register_soil(CLI::App& app);
+
 }  // namespace rockfall::app

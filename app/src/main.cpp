@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Print help for every subcommand");
     rockfall::app::register_simulate(app);
+    rockfall::app::register_soil(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

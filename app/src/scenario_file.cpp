@@ -55,6 +55,24 @@ const std::vector<ScenarioProblem>& sort_in_file_order(std::vector<ScenarioProbl
     throw ScenarioError({{std::move(file), line, "", std::move(message)}});
 }
 
+// Overrides `base` with `over`: tables merge recursively, any other value replaces the base's.
+// Nodes are moved, which keeps their source file and line for messages.
+void merge(toml::table& base, toml::table&& over) {
+    for (auto&& [key, node] : over) {
+        auto* over_table = node.as_table();
+        auto* base_table = base.get_as<toml::table>(key.str());
+        if (over_table != nullptr && base_table != nullptr) {
+            merge(*base_table, std::move(*over_table));
+        } else {
+            base.insert_or_assign(key, std::move(node));
+        }
+    }
+}
+
+}  // namespace
+
+namespace detail {
+
 std::string read_text(const fs::path& file, const std::string& referenced_from, int line) {
     std::error_code error;
     const fs::file_status status = fs::status(file, error);
@@ -92,32 +110,18 @@ toml::table parse_toml(std::string_view text, const std::string& source) {
     }
 }
 
-// Overrides `base` with `over`: tables merge recursively, any other value replaces the base's.
-// Nodes are moved, which keeps their source file and line for messages.
-void merge(toml::table& base, toml::table&& over) {
-    for (auto&& [key, node] : over) {
-        auto* over_table = node.as_table();
-        auto* base_table = base.get_as<toml::table>(key.str());
-        if (over_table != nullptr && base_table != nullptr) {
-            merge(*base_table, std::move(*over_table));
-        } else {
-            base.insert_or_assign(key, std::move(node));
-        }
-    }
-}
-
 // Resolves `extends` in `table`, written in `source`; `base_dir` resolves relative paths and
 // `chain` holds the files being resolved, outermost first, to detect cycles.
 toml::table resolve_extends(toml::table table, const std::string& source, const fs::path& base_dir,
                             std::vector<fs::path>& chain) {
     const toml::node* extends = table.get("extends");
     if (extends == nullptr) return table;
-    const detail::Location where = detail::node_location(*extends, source);
+    const Location where = node_location(*extends, source);
     const auto* name = extends->as_string();
     if (name == nullptr || name->get().empty()) {
         throw ScenarioError(
             {{where.file, where.line, "extends",
-              detail::describe(*extends) +
+              describe(*extends) +
                   ": must be the path of a base scenario file (a non-empty string)"}});
     }
     const fs::path base_path = (base_dir / name->get()).lexically_normal();
@@ -138,6 +142,10 @@ toml::table resolve_extends(toml::table table, const std::string& source, const 
     return base;
 }
 
+}  // namespace detail
+
+namespace {
+
 struct Parsed {
     engine::Scenario scenario;
     bool extended = false;
@@ -145,10 +153,10 @@ struct Parsed {
 
 Parsed parse(std::string_view text, const std::string& source, const fs::path& base_dir,
              std::vector<fs::path> chain) {
-    toml::table root = parse_toml(text, source);
+    toml::table root = detail::parse_toml(text, source);
     Parsed parsed;
     parsed.extended = root.contains("extends");
-    root = resolve_extends(std::move(root), source, base_dir, chain);
+    root = detail::resolve_extends(std::move(root), source, base_dir, chain);
 
     std::vector<ScenarioProblem> problems;
     detail::SourceMap sources;
@@ -169,7 +177,7 @@ ScenarioError::ScenarioError(std::vector<ScenarioProblem> problems)
 ScenarioFile load_scenario(const fs::path& file) {
     ScenarioFile loaded;
     loaded.path = file;
-    loaded.text = read_text(file, "", 0);
+    loaded.text = detail::read_text(file, "", 0);
     const Parsed parsed =
         parse(loaded.text, file.string(), file.parent_path(), {fs::weakly_canonical(file)});
     loaded.scenario = parsed.scenario;

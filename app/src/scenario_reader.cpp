@@ -15,22 +15,6 @@ Location node_location(const toml::node& node, const std::string& fallback) {
     return {source.path ? *source.path : fallback, static_cast<int>(source.begin.line)};
 }
 
-namespace {
-
-struct Context {
-    const std::string& file;
-    SourceMap& sources;
-    std::vector<ScenarioProblem>& problems;
-
-    void report(const toml::node& node, std::string path, std::string message) {
-        Location where = node_location(node, file);
-        problems.push_back(
-            {std::move(where.file), where.line, std::move(path), std::move(message)});
-    }
-};
-
-}  // namespace
-
 std::string describe(const toml::node& node) {
     if (node.is_table()) return "{...}";
     if (const auto* text = node.as_string()) return toml_string(text->get());
@@ -43,8 +27,6 @@ std::string describe(const toml::node& node) {
     return text;
 }
 
-namespace {
-
 // "must be a number (kg/m3) in [500, 10000]": the expected type, unit and range.
 std::string expectation(std::string_view what, std::string_view unit, const Range& range) {
     std::string text = "must be " + std::string(what);
@@ -52,6 +34,8 @@ std::string expectation(std::string_view what, std::string_view unit, const Rang
     if (range.min > -infinity || range.max < infinity) text += " " + range.describe();
     return text;
 }
+
+namespace {
 
 // Levenshtein distance, to suggest the key a misspelt one was meant to be.
 std::size_t edit_distance(std::string_view a, std::string_view b) {
@@ -69,61 +53,44 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     return row[b.size()];
 }
 
-// One TOML table being read: remembers which keys the reader asked for, so that every other
-// key can be reported as unknown, and records where each key was written.
-class TableReader {
-  public:
-    TableReader(const toml::table& table, std::string path, Context& context)
-        : table_(table), path_(std::move(path)), context_(context) {
-        context_.sources.add(path_, node_location(table_, context_.file));
+}  // namespace
+
+TableReader::TableReader(const toml::table& table, std::string path, Context& context)
+    : table_(table), path_(std::move(path)), context_(context) {
+    context_.sources.add(path_, node_location(table_, context_.file));
+}
+
+const toml::node* TableReader::get(std::string_view key) {
+    known_.emplace_back(key);
+    const toml::node* node = table_.get(key);
+    if (node != nullptr) context_.sources.add(path(key), node_location(*node, context_.file));
+    return node;
+}
+
+void TableReader::finish() {
+    for (const auto& [key, node] : table_) {
+        const std::string_view name = key.str();
+        if (std::find(known_.begin(), known_.end(), name) != known_.end()) continue;
+        context_.report(node, path(name), describe(node) + ": " + unknown_key_text(name));
     }
+}
 
-    // The node at `key`, or null when absent; `key` becomes one of the table's known keys.
-    const toml::node* get(std::string_view key) {
-        known_.emplace_back(key);
-        const toml::node* node = table_.get(key);
-        if (node != nullptr) context_.sources.add(path(key), node_location(*node, context_.file));
-        return node;
-    }
-
-    std::string path(std::string_view key) const {
-        return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
-    }
-
-    Context& context() { return context_; }
-
-    // Reports every key of the table that get() was never asked for.
-    void finish() {
-        for (const auto& [key, node] : table_) {
-            const std::string_view name = key.str();
-            if (std::find(known_.begin(), known_.end(), name) != known_.end()) continue;
-            context_.report(node, path(name), describe(node) + ": " + unknown_key_text(name));
+std::string TableReader::unknown_key_text(std::string_view name) const {
+    std::string text = "unknown key";
+    const std::string* best = nullptr;
+    std::size_t best_distance = std::max<std::size_t>(2, name.size() / 3) + 1;
+    for (const std::string& candidate : known_) {
+        const std::size_t distance = edit_distance(name, candidate);
+        if (distance < best_distance) {
+            best = &candidate;
+            best_distance = distance;
         }
     }
-
-  private:
-    std::string unknown_key_text(std::string_view name) const {
-        std::string text = "unknown key";
-        const std::string* best = nullptr;
-        std::size_t best_distance = std::max<std::size_t>(2, name.size() / 3) + 1;
-        for (const std::string& candidate : known_) {
-            const std::size_t distance = edit_distance(name, candidate);
-            if (distance < best_distance) {
-                best = &candidate;
-                best_distance = distance;
-            }
-        }
-        if (best != nullptr) text += " (did you mean '" + *best + "'?)";
-        text += "; allowed here:";
-        for (std::size_t i = 0; i < known_.size(); ++i) text += (i == 0 ? " " : ", ") + known_[i];
-        return text;
-    }
-
-    const toml::table& table_;
-    std::string path_;
-    Context& context_;
-    std::vector<std::string> known_;
-};
+    if (best != nullptr) text += " (did you mean '" + *best + "'?)";
+    text += "; allowed here:";
+    for (std::size_t i = 0; i < known_.size(); ++i) text += (i == 0 ? " " : ", ") + known_[i];
+    return text;
+}
 
 std::optional<double> number_of(const toml::node& node) {
     if (const auto* value = node.as_floating_point()) return value->get();
@@ -208,99 +175,31 @@ void read(TableReader& reader, std::string_view key, std::string& out) {
     }
 }
 
-template <class S, std::size_t N>
-void read_fields(TableReader& reader, S& object, const Fields<S, N>& fields) {
-    for (const Field<S>& field : fields) {
-        std::visit(
-            [&](auto member) { read(reader, field.key, object.*member, field.unit, field.range); },
-            field.member);
-    }
-}
-
-// A string key that must be one of `names`; returns the index of the name given.
-template <std::size_t N>
-std::optional<std::size_t> read_choice(TableReader& reader, std::string_view key,
-                                       const std::array<std::string_view, N>& names) {
-    const toml::node* node = reader.get(key);
-    if (node == nullptr) return std::nullopt;
-    if (const auto* value = node->as_string()) {
-        const auto found = std::find(names.begin(), names.end(), value->get());
-        if (found != names.end()) return static_cast<std::size_t>(found - names.begin());
-    }
-    std::string allowed;
-    for (std::size_t i = 0; i < N; ++i)
-        allowed += (i == 0 ? "\"" : ", \"") + std::string(names[i]) + "\"";
-    reader.context().report(*node, reader.path(key),
-                            describe(*node) + ": must be one of " + allowed);
-    return std::nullopt;
-}
-
-// An array whose elements are all accepted by `element` (which reports the ones it rejects);
-// replaces `out` only when every element is accepted.
-template <class T, class Element>
-void read_list(TableReader& reader, std::string_view key, std::vector<T>& out,
-               std::string_view what, Element element) {
-    const toml::node* node = reader.get(key);
-    if (node == nullptr) return;
-    const auto* array = node->as_array();
-    if (array == nullptr) {
-        reader.context().report(*node, reader.path(key),
-                                describe(*node) + ": must be an array of " + std::string(what));
-        return;
-    }
-    std::vector<T> values;
-    bool all = true;
-    for (std::size_t i = 0; i < array->size(); ++i) {
-        const toml::node& item = *array->get(i);
-        const std::string path = reader.path(key) + "[" + std::to_string(i) + "]";
-        reader.context().sources.add(path, node_location(item, reader.context().file));
-        if (std::optional<T> value = element(item, path)) {
-            values.push_back(std::move(*value));
-        } else {
-            all = false;
-        }
-    }
-    if (all) out = std::move(values);
-}
-
-// Runs `body` on the sub-table at `key`, if present; reports a non-table value.
-template <class Body>
-void with_table(TableReader& parent, std::string_view key, Body body) {
-    const toml::node* node = parent.get(key);
-    if (node == nullptr) return;
-    if (const auto* table = node->as_table()) {
-        TableReader reader(*table, parent.path(key), parent.context());
-        body(reader);
-        reader.finish();
-    } else {
-        parent.context().report(*node, parent.path(key),
-                                describe(*node) + ": must be a table ([" + parent.path(key) + "])");
-    }
-}
-
-// Reads an array of tables ([[key]] sections) into `out`, one default-initialised element per
-// table, each filled by `body(reader, element)`.
-template <class T, class Body>
-void with_table_array(TableReader& parent, std::string_view key, std::vector<T>& out, Body body) {
-    Context& context = parent.context();
-    read_list(parent, key, out, "tables ([[" + parent.path(key) + "]])",
-              [&](const toml::node& item, const std::string& path) -> std::optional<T> {
-                  const auto* table = item.as_table();
-                  if (table == nullptr) {
-                      context.report(item, path, describe(item) + ": must be a table");
-                      return std::nullopt;
-                  }
-                  T element{};
-                  TableReader reader(*table, path, context);
-                  body(reader, element);
-                  reader.finish();
-                  return element;
-              });
-}
+namespace {
 
 void read_material(TableReader& parent, std::string_view key, engine::Material& material) {
     with_table(parent, key, [&](TableReader& r) { read_fields(r, material, material_fields); });
 }
+
+void read_wall_contact(TableReader& r, engine::WallContact& contact) {
+    std::array<std::string_view, wall_model_names.size()> names;
+    for (std::size_t i = 0; i < names.size(); ++i) names[i] = wall_model_names[i].name;
+    if (const auto index = read_choice(r, "model", names)) {
+        contact.model = wall_model_names[*index].value;
+    }
+    read_fields(r, contact, wall_contact_fields);
+}
+
+void read_rock(TableReader& r, engine::RockRelease& rock) {
+    std::array<std::string_view, all_rock_kinds.size()> names;
+    for (std::size_t i = 0; i < names.size(); ++i) names[i] = shapes::to_string(all_rock_kinds[i]);
+    if (const auto index = read_choice(r, "kind", names)) rock.rock.kind = all_rock_kinds[*index];
+    read_fields(r, rock.rock, rock_fields);
+    read_material(r, "material", rock.rock.material);
+    with_table(r, "release", [&](TableReader& s) { read_fields(s, rock.release, release_fields); });
+}
+
+}  // namespace
 
 void read_slope(TableReader& r, shapes::SlopeSpec& slope) {
     read_fields(r, slope, slope_fields);
@@ -325,26 +224,6 @@ void read_slope(TableReader& r, shapes::SlopeSpec& slope) {
     });
     with_table(r, "wall", [&](TableReader& s) { read_fields(s, slope.wall, wall_fields); });
 }
-
-void read_wall_contact(TableReader& r, engine::WallContact& contact) {
-    std::array<std::string_view, wall_model_names.size()> names;
-    for (std::size_t i = 0; i < names.size(); ++i) names[i] = wall_model_names[i].name;
-    if (const auto index = read_choice(r, "model", names)) {
-        contact.model = wall_model_names[*index].value;
-    }
-    read_fields(r, contact, wall_contact_fields);
-}
-
-void read_rock(TableReader& r, engine::RockRelease& rock) {
-    std::array<std::string_view, all_rock_kinds.size()> names;
-    for (std::size_t i = 0; i < names.size(); ++i) names[i] = shapes::to_string(all_rock_kinds[i]);
-    if (const auto index = read_choice(r, "kind", names)) rock.rock.kind = all_rock_kinds[*index];
-    read_fields(r, rock.rock, rock_fields);
-    read_material(r, "material", rock.rock.material);
-    with_table(r, "release", [&](TableReader& s) { read_fields(s, rock.release, release_fields); });
-}
-
-}  // namespace
 
 engine::Scenario read_scenario(const toml::table& root, const std::string& file, SourceMap& sources,
                                std::vector<ScenarioProblem>& problems) {

@@ -8,7 +8,9 @@
 #include "shapes/rocks.hpp"
 #include "shapes/slope.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <string>
@@ -173,6 +175,70 @@ std::string format_vector(const engine::Vec3& value);
 std::string toml_string(std::string_view text);
 // "<value> <unit>" or "<value>" when dimensionless.
 std::string with_unit(const std::string& value, std::string_view unit);
+
+// Collects range and cross-field problems of a filled struct as ScenarioProblems.
+class Checker {
+  public:
+    Checker(const SourceMap* sources, std::vector<ScenarioProblem>& problems)
+        : sources_(sources), problems_(problems) {}
+
+    // Records `path = value: rule` at the key's location (or its table's when it is absent).
+    void fail(const std::string& path, const std::string& value, const std::string& rule) {
+        Location where = sources_ != nullptr ? sources_->find(path) : Location{};
+        problems_.push_back({std::move(where.file), where.line, path, value + ": " + rule});
+    }
+
+    bool check(const std::string& path, double value, std::string_view unit, const Range& range) {
+        if (range.contains(value)) return true;
+        fail(path, with_unit(format_number(value), unit),
+             std::string(std::isfinite(value) ? "must be " : "must be finite and ") +
+                 range.describe());
+        return false;
+    }
+
+    bool check(const std::string& path, int value, std::string_view unit, const Range& range) {
+        if (range.contains(value)) return true;
+        fail(path, with_unit(std::to_string(value), unit), "must be " + range.describe());
+        return false;
+    }
+
+    bool check(const std::string& path, const engine::Vec3& value, std::string_view unit,
+               const Range& range) {
+        if (std::all_of(value.begin(), value.end(), [&](double c) { return range.contains(c); })) {
+            return true;
+        }
+        fail(path, with_unit(format_vector(value), unit),
+             "every component must be " + range.describe());
+        return false;
+    }
+
+    bool check(const std::string& /*path*/, bool /*value*/, std::string_view /*unit*/,
+               const Range& /*range*/) {
+        return true;
+    }
+
+    // Checks every field of `object` against its range; true when all pass.
+    template <class S, std::size_t N>
+    bool check_fields(const S& object, const std::string& prefix, const Fields<S, N>& fields) {
+        bool ok = true;
+        for (const Field<S>& field : fields) {
+            const std::string path =
+                prefix.empty() ? std::string(field.key) : prefix + "." + std::string(field.key);
+            std::visit(
+                [&](auto member) { ok &= check(path, object.*member, field.unit, field.range); },
+                field.member);
+        }
+        return ok;
+    }
+
+  private:
+    const SourceMap* sources_;
+    std::vector<ScenarioProblem>& problems_;
+};
+
+// Range checks and cross-field rules of a slope (shared with the soil scenario); returns true
+// when the profile is valid, so that rules depending on it can run.
+bool check_slope(Checker& c, const shapes::SlopeSpec& slope);
 
 // Range checks and cross-field rules for a scenario read from a file or built in code;
 // `sources` (may be null) places each problem in the file.

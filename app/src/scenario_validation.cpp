@@ -108,65 +108,6 @@ std::string indexed(std::string_view path, std::size_t index) {
     return std::string(path) + "[" + std::to_string(index) + "]";
 }
 
-class Checker {
-  public:
-    Checker(const SourceMap* sources, std::vector<ScenarioProblem>& problems)
-        : sources_(sources), problems_(problems) {}
-
-    // Records `path = value: rule` at the key's location (or its table's when it is absent).
-    void fail(const std::string& path, const std::string& value, const std::string& rule) {
-        Location where = sources_ != nullptr ? sources_->find(path) : Location{};
-        problems_.push_back({std::move(where.file), where.line, path, value + ": " + rule});
-    }
-
-    bool check(const std::string& path, double value, std::string_view unit, const Range& range) {
-        if (range.contains(value)) return true;
-        fail(path, with_unit(format_number(value), unit),
-             std::string(std::isfinite(value) ? "must be " : "must be finite and ") +
-                 range.describe());
-        return false;
-    }
-
-    bool check(const std::string& path, int value, std::string_view unit, const Range& range) {
-        if (range.contains(value)) return true;
-        fail(path, with_unit(std::to_string(value), unit), "must be " + range.describe());
-        return false;
-    }
-
-    bool check(const std::string& path, const engine::Vec3& value, std::string_view unit,
-               const Range& range) {
-        if (std::all_of(value.begin(), value.end(), [&](double c) { return range.contains(c); })) {
-            return true;
-        }
-        fail(path, with_unit(format_vector(value), unit),
-             "every component must be " + range.describe());
-        return false;
-    }
-
-    bool check(const std::string& /*path*/, bool /*value*/, std::string_view /*unit*/,
-               const Range& /*range*/) {
-        return true;
-    }
-
-    // Checks every field of `object` against its range; true when all pass.
-    template <class S, std::size_t N>
-    bool check_fields(const S& object, const std::string& prefix, const Fields<S, N>& fields) {
-        bool ok = true;
-        for (const Field<S>& field : fields) {
-            const std::string path =
-                prefix.empty() ? std::string(field.key) : prefix + "." + std::string(field.key);
-            std::visit(
-                [&](auto member) { ok &= check(path, object.*member, field.unit, field.range); },
-                field.member);
-        }
-        return ok;
-    }
-
-  private:
-    const SourceMap* sources_;
-    std::vector<ScenarioProblem>& problems_;
-};
-
 // Facts about a valid profile that the cross-field rules need.
 struct Profile {
     // Distance along the surface from the crown to the end of the part a rock may start on:
@@ -218,34 +159,6 @@ void check_bars(Checker& c, const shapes::AngleBars& bars, std::size_t segment_c
     }
 }
 
-// Returns true when the profile is valid, so that rules depending on it can run.
-bool check_slope(Checker& c, const shapes::SlopeSpec& slope) {
-    bool profile_ok = c.check_fields(slope, "slope", slope_fields);
-    if (slope.segments.empty()) {
-        c.fail("slope.segments", "[]", "must have at least one segment");
-        profile_ok = false;
-    }
-    for (std::size_t i = 0; i < slope.segments.size(); ++i) {
-        profile_ok &=
-            c.check_fields(slope.segments[i], indexed("slope.segments", i), segment_fields);
-    }
-    c.check_fields(slope.side_walls, "slope.side_walls", side_wall_fields);
-    check_bars(c, slope.bars, slope.segments.size());
-    const bool wall_ok = c.check_fields(slope.wall, "slope.wall", wall_fields);
-    if (profile_ok && wall_ok && slope.wall.enabled) {
-        const double runout = profile_of(slope).runout_horizontal;
-        const double room = runout - slope.wall.thickness;
-        if (slope.wall.distance_from_toe > room) {
-            c.fail(
-                "slope.wall.distance_from_toe", format_number(slope.wall.distance_from_toe) + " m",
-                "must be in (0, " + format_number(room) + "] so that the wall (" +
-                    format_number(slope.wall.thickness) + " m thick) stands on the last segment (" +
-                    format_number(runout) + " m long horizontally)");
-        }
-    }
-    return profile_ok;
-}
-
 void check_rock(Checker& c, const engine::Scenario& s, std::size_t index, bool profile_ok) {
     const engine::RockRelease& rock = s.rocks[index];
     const std::string path = indexed("rocks", index);
@@ -288,6 +201,33 @@ void check_rock(Checker& c, const engine::Scenario& s, std::size_t index, bool p
 }
 
 }  // namespace
+
+bool check_slope(Checker& c, const shapes::SlopeSpec& slope) {
+    bool profile_ok = c.check_fields(slope, "slope", slope_fields);
+    if (slope.segments.empty()) {
+        c.fail("slope.segments", "[]", "must have at least one segment");
+        profile_ok = false;
+    }
+    for (std::size_t i = 0; i < slope.segments.size(); ++i) {
+        profile_ok &=
+            c.check_fields(slope.segments[i], indexed("slope.segments", i), segment_fields);
+    }
+    c.check_fields(slope.side_walls, "slope.side_walls", side_wall_fields);
+    check_bars(c, slope.bars, slope.segments.size());
+    const bool wall_ok = c.check_fields(slope.wall, "slope.wall", wall_fields);
+    if (profile_ok && wall_ok && slope.wall.enabled) {
+        const double runout = profile_of(slope).runout_horizontal;
+        const double room = runout - slope.wall.thickness;
+        if (slope.wall.distance_from_toe > room) {
+            c.fail(
+                "slope.wall.distance_from_toe", format_number(slope.wall.distance_from_toe) + " m",
+                "must be in (0, " + format_number(room) + "] so that the wall (" +
+                    format_number(slope.wall.thickness) + " m thick) stands on the last segment (" +
+                    format_number(runout) + " m long horizontally)");
+        }
+    }
+    return profile_ok;
+}
 
 std::vector<ScenarioProblem> find_problems(const engine::Scenario& s, const SourceMap* sources) {
     std::vector<ScenarioProblem> problems;
