@@ -46,8 +46,7 @@ struct Units {
     const char* force;
     const char* impulse;
     const char* mass;
-    const char* energy;
-    // Suffix of JSON keys and CSV columns: "N" or "N_per_m", and so on.
+    // A JSON key or CSV column with a unit suffix: "wall_force_N", or "wall_force_N_per_m" in 2D.
     std::string key(const char* base) const {
         return per_metre ? base + std::string("_per_m") : base;
     }
@@ -55,8 +54,8 @@ struct Units {
 };
 
 Units units_of(const mpm::SoilOutcome& outcome) {
-    if (outcome.dimension == 2) return {"N/m", "N s/m", "kg/m", "J/m", true};
-    return {"N", "N s", "kg", "J", false};
+    if (outcome.dimension == 2) return {"N/m", "N s/m", "kg/m", true};
+    return {"N", "N s", "kg", false};
 }
 
 const char* to_string(mpm::SoilStatus status) {
