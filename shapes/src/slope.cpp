@@ -118,11 +118,16 @@ Slope::Slope(const SlopeSpec& spec) : spec_(spec) {
     const auto& segments = spec_.segments;
     const int count = static_cast<int>(segments.size());
 
+    for (const SlopeSegment& segment : segments) {
+        trig_.push_back(
+            {tangent_of(segment), normal_of(segment), std::tan(radians(segment.angle_deg))});
+    }
+
     // Profile from the crown down, then shifted so that the end of the last segment is z = 0.
     profile_.emplace_back(0.0, 0.0);
-    for (const SlopeSegment& segment : segments) {
-        const Vec3 t = tangent_of(segment);
-        profile_.push_back(profile_.back() + segment.length * Eigen::Vector2d(t.x(), t.z()));
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        const Vec3& t = trig_[i].tangent;
+        profile_.push_back(profile_.back() + segments[i].length * Eigen::Vector2d(t.x(), t.z()));
     }
     const double end_z = profile_.back().y();
     for (Eigen::Vector2d& vertex : profile_) {
@@ -181,11 +186,9 @@ Slope::Slope(const SlopeSpec& spec) : spec_(spec) {
         const double front = wall_x();
         assert(front > toe_x() && front < end_x());
         const double back = front + spec_wall.thickness;
-        const SlopeSegment& last = segments.back();
         // Vertical faces on a possibly inclined run-out: the bottom reaches the slab's
         // underside below the back face, the top is `height` above the surface at the front.
-        const double bottom =
-            surface_height(back) - spec_.thickness / std::cos(radians(last.angle_deg));
+        const double bottom = surface_height(back) - spec_.thickness / trig_.back().normal.z();
         const double top = surface_height(front) + spec_wall.height;
         OrientedBox box;
         box.center = Vec3(0.5 * (front + back), 0.0, 0.5 * (bottom + top));
@@ -216,16 +219,15 @@ int Slope::segment_at(double x) const {
 double Slope::surface_height(double x) const {
     const double clamped = std::clamp(x, 0.0, end_x());
     const auto i = static_cast<std::size_t>(segment_at(clamped));
-    const double slope = std::tan(radians(spec_.segments[i].angle_deg));
-    return profile_[i].y() - (clamped - profile_[i].x()) * slope;
+    return profile_[i].y() - (clamped - profile_[i].x()) * trig_[i].slope;
 }
 
 Vec3 Slope::surface_normal(double x) const {
-    return normal_of(spec_.segments[static_cast<std::size_t>(segment_at(x))]);
+    return trig_[static_cast<std::size_t>(segment_at(x))].normal;
 }
 
 Vec3 Slope::surface_tangent(double x) const {
-    return tangent_of(spec_.segments[static_cast<std::size_t>(segment_at(x))]);
+    return trig_[static_cast<std::size_t>(segment_at(x))].tangent;
 }
 
 Vec3 Slope::point_at_distance(double s) const {
@@ -236,7 +238,7 @@ Vec3 Slope::point_at_distance(double s) const {
         if (s < start + segment.length || i == last) {
             const double along = std::clamp(s - start, 0.0, segment.length);
             const Vec3 origin(profile_[i].x(), 0.0, profile_[i].y());
-            return origin + along * tangent_of(segment);
+            return origin + along * trig_[i].tangent;
         }
         start += segment.length;
     }
@@ -251,8 +253,7 @@ double Slope::distance_along_surface(double x) const {
     for (std::size_t i = 0; i < index; ++i) {
         start += spec_.segments[i].length;
     }
-    const double cosine = std::cos(radians(spec_.segments[index].angle_deg));
-    return start + (clamped - profile_[index].x()) / cosine;
+    return start + (clamped - profile_[index].x()) / trig_[index].normal.z();
 }
 
 }  // namespace rockfall::shapes
