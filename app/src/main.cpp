@@ -1,17 +1,19 @@
 // The `rockfall` program: parses the command line and dispatches to a subcommand.
 
-#include <exception>
-#include <iostream>
+#include "commands.hpp"
+
+#include "app/scenario_file.hpp"
+#include "shapes/polyhedron.hpp"
 
 #include <CLI/CLI.hpp>
 
-#include "app/scenario_file.hpp"
-#include "commands.hpp"
-#include "shapes/polyhedron.hpp"
+#include <exception>
+#include <iostream>
 
 int main(int argc, char** argv) {
-    CLI::App app{"rockfall: how far rocks and soil released from a slope travel, and how hard "
-                 "they hit a wall (Bullet rigid bodies, MPM soil flow, Monte Carlo risk)"};
+    CLI::App app{
+        "rockfall: how far rocks and soil released from a slope travel, and how hard "
+        "they hit a wall (Bullet rigid bodies, MPM soil flow, Monte Carlo risk)"};
     app.set_version_flag("--version", std::string("rockfall ") + ROCKFALL_VERSION);
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Print help for every subcommand");

@@ -97,8 +97,8 @@ TEST_CASE("soil file: out-of-range values name value, unit and range", "[app][so
     expect_problem(error, file, "numerics.particles_per_cell", "particles_per_cell",
                    {"12", "must be in [1, 8]"});
     // One line per problem, in file order.
-    CHECK_THAT(std::string(error.what()), Contains("density = -1640 kg/m3: must be > 0 (" +
-                                                   file.string() + ":4)\n"));
+    CHECK_THAT(std::string(error.what()),
+               Contains("density = -1640 kg/m3: must be > 0 (" + file.string() + ":4)\n"));
 }
 
 TEST_CASE("soil file: wrong types and unknown choices", "[app][soil]") {
@@ -107,8 +107,9 @@ TEST_CASE("soil file: wrong types and unknown choices", "[app][soil]") {
     CHECK(error.problems().size() == 3);
     expect_problem(error, file, "material.cohesion", "cohesion",
                    {"\"2.1 kPa\"", "must be a number (Pa) >= 0"});
-    expect_problem(error, file, "material.match", "match",
-                   {"\"outer\"", "must be one of \"plane_strain\", \"compression\", \"extension\""});
+    expect_problem(
+        error, file, "material.match", "match",
+        {"\"outer\"", "must be one of \"plane_strain\", \"compression\", \"extension\""});
     expect_problem(error, file, "numerics.dimension", "dimension",
                    {"2.5", "must be an integer in [2, 3]"});
 }
