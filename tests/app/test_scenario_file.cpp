@@ -1,3 +1,5 @@
+#include "scenario_errors.hpp"
+
 #include "app/scenario_file.hpp"
 
 #include <catch2/catch.hpp>
@@ -15,32 +17,18 @@ using rockfall::app::ScenarioError;
 using rockfall::app::ScenarioProblem;
 using rockfall::shapes::RockKind;
 
+using rockfall::test::line_of;
+using rockfall::test::problem_for;
+
 namespace {
+
+ScenarioError load_error(const fs::path& file) {
+    return rockfall::test::load_error([](const fs::path& f) { rockfall::app::load_scenario(f); },
+                                      file);
+}
 
 const fs::path samples = ROCKFALL_SAMPLES_DIR;
 const fs::path bad = fs::path(ROCKFALL_SCENARIO_DATA_DIR);
-
-// 1-based line of the first line of `file` containing `needle`.
-int line_of(const fs::path& file, const std::string& needle) {
-    std::ifstream in(file);
-    std::string line;
-    for (int number = 1; std::getline(in, line); ++number) {
-        if (line.find(needle) != std::string::npos) return number;
-    }
-    FAIL("'" << needle << "' not in " << file);
-    return 0;
-}
-
-// The ScenarioError that loading `file` throws.
-ScenarioError load_error(const fs::path& file) {
-    try {
-        rockfall::app::load_scenario(file);
-    } catch (const ScenarioError& error) {
-        return error;
-    }
-    FAIL("loading " << file << " did not throw");
-    throw;
-}
 
 ScenarioError parse_error(const std::string& text) {
     try {
@@ -49,15 +37,6 @@ ScenarioError parse_error(const std::string& text) {
         return error;
     }
     FAIL("parsing did not throw:\n" << text);
-    throw;
-}
-
-// The problem reported for `key`; fails the test when there is none.
-ScenarioProblem problem_for(const ScenarioError& error, const std::string& key) {
-    for (const ScenarioProblem& problem : error.problems()) {
-        if (problem.key == key) return problem;
-    }
-    FAIL("no problem for key '" << key << "' in:\n" << error.what());
     throw;
 }
 

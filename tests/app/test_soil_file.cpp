@@ -1,3 +1,5 @@
+#include "scenario_errors.hpp"
+
 #include "app/soil_file.hpp"
 
 #include <catch2/catch.hpp>
@@ -11,38 +13,17 @@ using Catch::Matchers::Contains;
 using rockfall::app::ScenarioError;
 using rockfall::app::ScenarioProblem;
 
+using rockfall::test::line_of;
+using rockfall::test::problem_for;
+
 namespace {
 
 const fs::path samples = fs::path(ROCKFALL_SAMPLES_DIR) / "soil";
 const fs::path bad = fs::path(ROCKFALL_SOIL_DATA_DIR);
 
-// 1-based line of the first line of `file` containing `needle`.
-int line_of(const fs::path& file, const std::string& needle) {
-    std::ifstream in(file);
-    std::string line;
-    for (int number = 1; std::getline(in, line); ++number) {
-        if (line.find(needle) != std::string::npos) return number;
-    }
-    FAIL("'" << needle << "' not in " << file);
-    return 0;
-}
-
 ScenarioError load_error(const fs::path& file) {
-    try {
-        rockfall::app::load_soil_scenario(file);
-    } catch (const ScenarioError& error) {
-        return error;
-    }
-    FAIL("loading " << file << " did not throw");
-    throw;
-}
-
-ScenarioProblem problem_for(const ScenarioError& error, const std::string& key) {
-    for (const ScenarioProblem& problem : error.problems()) {
-        if (problem.key == key) return problem;
-    }
-    FAIL("no problem for key '" << key << "' in:\n" << error.what());
-    throw;
+    return rockfall::test::load_error(
+        [](const fs::path& f) { rockfall::app::load_soil_scenario(f); }, file);
 }
 
 // Checks that `key` is reported at the line of `file` that contains `needle`, with a message
