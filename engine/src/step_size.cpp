@@ -3,6 +3,7 @@
 #include "release.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rockfall::engine {
 namespace {
@@ -15,12 +16,22 @@ constexpr double kReserve = 1e-4;
 
 WallApproach wall_approach(const shapes::OrientedBox& wall, const shapes::RockGeometry& rock,
                            const BodyState& state, double coarse_dt) {
-    Vec3 normal = Vec3::Zero();
-    const double centre_distance = shapes::signed_distance(wall, state.position, &normal);
     const bool sphere = rock.radius > 0.0;
     WallApproach approach;
     approach.closing_speed = state.velocity.norm() +
                              (sphere ? 0.0 : state.angular_velocity.norm() * rock.bounding_radius);
+    // The distance to a box is at least the distance to the slab between its two faces normal
+    // to its first axis; when even that bound leaves more than two coarse steps of travel,
+    // approach_step takes the coarse step and the exact distance is not needed (it cost 0.4 %
+    // of a run, measured with callgrind on the seed slope).
+    const double slab_gap = std::abs(wall.rotation.col(0).dot(state.position - wall.center)) -
+                            wall.half_extents.x() - rock.bounding_radius;
+    if (slab_gap > 2.0 * approach.closing_speed * coarse_dt + kReserve) {
+        approach.gap = slab_gap;
+        return approach;
+    }
+    Vec3 normal = Vec3::Zero();
+    const double centre_distance = shapes::signed_distance(wall, state.position, &normal);
     approach.approach_speed = -state.velocity.dot(normal);
     approach.gap = centre_distance - rock.bounding_radius;
     if (!sphere && approach.gap <= 2.0 * approach.closing_speed * coarse_dt + kReserve) {

@@ -20,8 +20,9 @@ struct WallApproach {
     double approach_speed = 0.0;
 };
 
-// The rock's approach. Beyond two coarse steps (coarse_dt, s) of travel the gap is that of the
-// bounding sphere; closer, that of the rock itself.
+// The rock's approach. Beyond two coarse steps (coarse_dt, s) of travel the gap is a lower
+// bound (that of the bounding sphere, or to the slab of the wall's first axis, where
+// approach_speed stays 0); closer, that of the rock itself.
 WallApproach wall_approach(const shapes::OrientedBox& wall, const shapes::RockGeometry& rock,
                            const BodyState& state, double coarse_dt);
 
