@@ -130,7 +130,7 @@ class Slope {
 
   private:
     // Trigonometry of one segment, evaluated once: the surface queries run every step and
-    // recomputing it dominated their cost (profile: ~5 % of a run in libm).
+    // recomputing it cost ~1.3 % of a run in libm (callgrind, seed slope).
     struct SegmentTrig {
         // Downslope unit tangent and upward unit normal, (cos a, 0, -sin a) and (sin a, 0, cos a).
         Vec3 tangent;
