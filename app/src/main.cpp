@@ -13,7 +13,7 @@
 int main(int argc, char** argv) {
     CLI::App app{
         "rockfall: how far rocks and soil released from a slope travel, and how hard "
-        "they hit a wall (Bullet rigid bodies, MPM soil flow, Monte Carlo risk)"};
+        "they hit a wall (Bullet rigid bodies, MPM soil flow)"};
     app.set_version_flag("--version", std::string("rockfall ") + ROCKFALL_VERSION);
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Print help for every subcommand");
