@@ -16,4 +16,8 @@ void register_simulate(CLI::App& app);
 /// `rockfall soil SCENARIO`: one soil flow (MPM) with the wall load history, runout and deposit.
 void register_soil(CLI::App& app);
 
+/// `rockfall formula NAME`: one impact design formula (Japan Road Association or seed 000's
+/// proposal) evaluated for a mass and an impact velocity or fall height.
+void register_formula(CLI::App& app);
+
 }  // namespace rockfall::app

@@ -9,6 +9,7 @@
 
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 
 int main(int argc, char** argv) {
     CLI::App app{
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
     app.set_help_all_flag("--help-all", "Print help for every subcommand");
     rockfall::app::register_simulate(app);
     rockfall::app::register_soil(app);
+    rockfall::app::register_formula(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -28,6 +30,9 @@ int main(int argc, char** argv) {
         std::cerr << "rockfall: " << e.what() << '\n';
         return rockfall::app::exit_bad_input;
     } catch (const rockfall::shapes::GeometryError& e) {
+        std::cerr << "rockfall: " << e.what() << '\n';
+        return rockfall::app::exit_bad_input;
+    } catch (const std::invalid_argument& e) {
         std::cerr << "rockfall: " << e.what() << '\n';
         return rockfall::app::exit_bad_input;
     } catch (const std::exception& e) {

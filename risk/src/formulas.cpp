@@ -77,6 +77,11 @@ double jra_equivalent_height(double velocity) {
     return velocity * velocity / (2.0 * jra_gravity);
 }
 
+double jra_impact_velocity(double height) {
+    require_positive("height", height, "m");
+    return std::sqrt(2.0 * jra_gravity * height);
+}
+
 double jra_impact_force(double mass, double velocity, const ImpactCoefficients& coefficients) {
     require_positive("mass", mass, "kg");
     return jra_impact_force_from_height(mass, jra_equivalent_height(velocity), coefficients);

@@ -76,6 +76,8 @@ TEST_CASE("shape names round-trip", "[risk][formulas]") {
 TEST_CASE("fall height form equals velocity form", "[risk][formulas]") {
     const double height = jra_equivalent_height(velocity);
     CHECK_THAT(height, WithinRel(64.0 / 19.62, 1e-14));
+    CHECK_THAT(jra_impact_velocity(height), WithinRel(velocity, 1e-14));
+    CHECK_THROWS_WITH(jra_impact_velocity(0.0), Contains("height = 0 m"));
     for (const ImpactShape shape :
          {ImpactShape::sphere, ImpactShape::massive, ImpactShape::planar}) {
         const ImpactCoefficients c = seed_coefficients(shape);

@@ -62,6 +62,11 @@ std::string_view to_string(ImpactShape shape);
 /// in m/s (finite, > 0). Throws std::invalid_argument otherwise.
 double jra_equivalent_height(double velocity);
 
+/// Impact velocity v = sqrt(2 g H) with g = jra_gravity, in m/s, for an equivalent fall
+/// height in m (finite, > 0): the inverse of jra_equivalent_height. Throws
+/// std::invalid_argument otherwise.
+double jra_impact_velocity(double height);
+
 /// Peak impact load P in N of a rock of mass in kg (finite, > 0) hitting at a velocity in
 /// m/s (finite, > 0), by the handbook formula with the given coefficients (each finite and
 /// > 0). Validity: compact rocks in elastic impact; seed 000's coefficients were identified
