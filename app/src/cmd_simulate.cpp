@@ -41,7 +41,7 @@ class TrajectoryCsv {
     }
     void add(int rock, const engine::RockState& s) {
         const auto& q = s.orientation;
-        out_ << rock << ',' << s.time << ',' << s.position.x() << ',' << s.position.y() << ','
+        out_ << rock + 1 << ',' << s.time << ',' << s.position.x() << ',' << s.position.y() << ','
              << s.position.z() << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z()
              << ',' << s.velocity.x() << ',' << s.velocity.y() << ',' << s.velocity.z() << ','
              << s.angular_velocity.x() << ',' << s.angular_velocity.y() << ','
