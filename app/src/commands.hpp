@@ -20,4 +20,8 @@ void register_soil(CLI::App& app);
 /// proposal) evaluated for a mass and an impact velocity or fall height.
 void register_formula(CLI::App& app);
 
+/// `rockfall shape --kind K`: the shape measures of one rock (volume, inertia, axis lengths,
+/// sphericities) and optionally its simulated hull as an OBJ file.
+void register_shape(CLI::App& app);
+
 }  // namespace rockfall::app

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     rockfall::app::register_simulate(app);
     rockfall::app::register_soil(app);
     rockfall::app::register_formula(app);
+    rockfall::app::register_shape(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
