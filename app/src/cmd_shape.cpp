@@ -1,5 +1,6 @@
 // `rockfall shape --kind K`: the shape measures of one rock, and its hull as an OBJ file.
 
+#include "atomic_file.hpp"
 #include "commands.hpp"
 
 #include "shapes/measures.hpp"
@@ -120,35 +121,26 @@ nlohmann::json to_json(const ShapeArgs& args, const shapes::RockGeometry& rock,
             {"exact_sphere", rock.radius > 0.0}};
 }
 
-// Written to OUT.part and renamed, so that a reader never sees half a file.
+// The simulated hull as OBJ (committed only when complete).
 void write_obj(const std::string& path, const ShapeArgs& args, const shapes::RockGeometry& rock) {
-    const std::string part = path + ".part";
-    {
-        std::ofstream out(part);
-        if (!out) {
-            throw std::runtime_error("cannot write " + part);
-        }
-        out << "# rockfall shape --kind " << args.kind << " --size " << args.size
-            << ": the simulated hull in the body frame (m; centroid at the origin, principal "
-               "axes along x, y, z)\n";
-        if (rock.radius > 0.0) {
-            out << "# display tessellation: the engine simulates an exact sphere of radius "
-                << rock.radius << " m\n";
-        }
-        char line[96];
-        for (const shapes::Vec3& v : rock.hull.vertices) {
-            std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", v[0], v[1], v[2]);
-            out << line;
-        }
-        for (const auto& [a, b, c] : rock.hull.triangles) {
-            out << "f " << a + 1 << ' ' << b + 1 << ' ' << c + 1 << '\n';
-        }
-        out.close();
-        if (!out) {
-            throw std::runtime_error("write failed: " + part);
-        }
+    AtomicFile file(path);
+    std::ofstream& out = file.stream();
+    out << "# rockfall shape --kind " << args.kind << " --size " << args.size
+        << ": the simulated hull in the body frame (m; centroid at the origin, principal "
+           "axes along x, y, z)\n";
+    if (rock.radius > 0.0) {
+        out << "# display tessellation: the engine simulates an exact sphere of radius "
+            << rock.radius << " m\n";
     }
-    std::filesystem::rename(part, path);
+    char line[96];
+    for (const shapes::Vec3& v : rock.hull.vertices) {
+        std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", v[0], v[1], v[2]);
+        out << line;
+    }
+    for (const auto& [a, b, c] : rock.hull.triangles) {
+        out << "f " << a + 1 << ' ' << b + 1 << ' ' << c + 1 << '\n';
+    }
+    file.commit();
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // `rockfall simulate`: one release of a scenario, summary or JSON, optional trajectory CSV.
 
+#include "atomic_file.hpp"
 #include "commands.hpp"
 #include "report.hpp"
 
@@ -26,46 +27,27 @@ struct SimulateArgs {
     double trajectory_interval = 0.01;
 };
 
-/// Writes trajectory rows to `path` through a temporary file renamed at the end, so that an
-/// interrupted run never leaves a half-written CSV under the requested name.
+/// Trajectory rows as CSV, committed only when the run completed.
 class TrajectoryCsv {
   public:
-    explicit TrajectoryCsv(std::filesystem::path path)
-        : path_(std::move(path)), tmp_(path_.string() + ".part"), out_(tmp_) {
-        if (!out_) {
-            throw std::runtime_error("cannot write trajectory file '" + tmp_.string() + "'");
-        }
-        out_ << "rock,time_s,x_m,y_m,z_m,qw,qx,qy,qz,vx_m_s,vy_m_s,vz_m_s,wx_rad_s,wy_rad_s,"
-                "wz_rad_s,translational_energy_J,rotational_energy_J\n";
-        out_ << std::setprecision(9);
+    explicit TrajectoryCsv(std::filesystem::path path) : file_(std::move(path)) {
+        file_.stream() << "rock,time_s,x_m,y_m,z_m,qw,qx,qy,qz,vx_m_s,vy_m_s,vz_m_s,wx_rad_s,"
+                          "wy_rad_s,wz_rad_s,translational_energy_J,rotational_energy_J\n"
+                       << std::setprecision(9);
     }
     void add(int rock, const engine::RockState& s) {
         const auto& q = s.orientation;
-        out_ << rock + 1 << ',' << s.time << ',' << s.position.x() << ',' << s.position.y() << ','
-             << s.position.z() << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z()
-             << ',' << s.velocity.x() << ',' << s.velocity.y() << ',' << s.velocity.z() << ','
-             << s.angular_velocity.x() << ',' << s.angular_velocity.y() << ','
-             << s.angular_velocity.z() << ',' << s.translational_energy << ','
-             << s.rotational_energy << '\n';
+        file_.stream() << rock + 1 << ',' << s.time << ',' << s.position.x() << ','
+                       << s.position.y() << ',' << s.position.z() << ',' << q.w() << ',' << q.x()
+                       << ',' << q.y() << ',' << q.z() << ',' << s.velocity.x() << ','
+                       << s.velocity.y() << ',' << s.velocity.z() << ',' << s.angular_velocity.x()
+                       << ',' << s.angular_velocity.y() << ',' << s.angular_velocity.z() << ','
+                       << s.translational_energy << ',' << s.rotational_energy << '\n';
     }
-    void commit() {
-        out_.close();
-        if (!out_)
-            throw std::runtime_error("writing trajectory file '" + tmp_.string() + "' failed");
-        std::filesystem::rename(tmp_, path_);
-    }
-    ~TrajectoryCsv() {
-        if (out_.is_open()) {
-            out_.close();
-            std::error_code ignored;
-            std::filesystem::remove(tmp_, ignored);
-        }
-    }
+    void commit() { file_.commit(); }
 
   private:
-    std::filesystem::path path_;
-    std::filesystem::path tmp_;
-    std::ofstream out_;
+    AtomicFile file_;
 };
 
 void run_simulate(const SimulateArgs& args) {

@@ -1,6 +1,7 @@
 // `rockfall soil`: one soil flow (scenario C, MPM), summary or JSON, optional wall-load CSV
 // and particle frames for ParaView.
 
+#include "atomic_file.hpp"
 #include "commands.hpp"
 
 #include "app/soil_file.hpp"
@@ -117,27 +118,20 @@ class VtkFrames {
     std::string error_;
 };
 
-// Writes the sampled wall-load history through FILE.part, renamed at the end, so that a failed
-// run never leaves a half-written CSV under the requested name.
+// Writes the sampled wall-load history (committed only when complete).
 void write_csv(const fs::path& path, const mpm::SoilOutcome& o) {
     const Units u = units_of(o);
-    const fs::path part = path.string() + ".part";
-    {
-        std::ofstream out(part);
-        if (!out) throw std::runtime_error("cannot write the CSV file '" + part.string() + "'");
-        out << "time_s," << u.key("wall_force_N") << ',' << u.key("wall_force_filtered_N")
-            << ",centre_of_mass_x_m,centre_of_mass_z_m,front_x_m," << u.key("kinetic_energy_J")
-            << '\n'
-            << std::setprecision(9);
-        for (std::size_t k = 0; k < o.sample_time.size(); ++k) {
-            out << o.sample_time[k] << ',' << o.wall_force[k] << ',' << o.wall_force_filtered[k]
-                << ',' << o.centre_of_mass[k].x() << ',' << o.centre_of_mass[k].z() << ','
-                << o.front_x[k] << ',' << o.kinetic_energy[k] << '\n';
-        }
-        out.close();
-        if (!out) throw std::runtime_error("writing the CSV file '" + part.string() + "' failed");
+    AtomicFile file(path);
+    std::ofstream& out = file.stream();
+    out << "time_s," << u.key("wall_force_N") << ',' << u.key("wall_force_filtered_N")
+        << ",centre_of_mass_x_m,centre_of_mass_z_m,front_x_m," << u.key("kinetic_energy_J") << '\n'
+        << std::setprecision(9);
+    for (std::size_t k = 0; k < o.sample_time.size(); ++k) {
+        out << o.sample_time[k] << ',' << o.wall_force[k] << ',' << o.wall_force_filtered[k] << ','
+            << o.centre_of_mass[k].x() << ',' << o.centre_of_mass[k].z() << ',' << o.front_x[k]
+            << ',' << o.kinetic_energy[k] << '\n';
     }
-    fs::rename(part, path);
+    file.commit();
 }
 
 struct RunInfo {
