@@ -1,6 +1,7 @@
 // `rockfall formula NAME`: one impact design formula evaluated, with every input echoed in SI.
 
 #include "commands.hpp"
+#include "text_format.hpp"
 
 #include "risk/formulas.hpp"
 
@@ -91,12 +92,6 @@ Evaluation evaluate(const FormulaArgs& args) {
         e.load = risk::jra_impact_force_from_height(e.mass, e.height, e.coefficients);
     }
     return e;
-}
-
-std::string fmt(const char* format, double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, format, value);
-    return buffer;
 }
 
 void print_text(const FormulaArgs& args, const Evaluation& e) {

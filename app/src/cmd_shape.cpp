@@ -2,6 +2,7 @@
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
+#include "text_format.hpp"
 
 #include "shapes/measures.hpp"
 #include "shapes/platonic.hpp"
@@ -67,11 +68,7 @@ shapes::RockGeometry make_shape(const ShapeArgs& args) {
                                   shapes::RockKind::massive, args.size);
 }
 
-std::string fmt(double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.6g", value);
-    return buffer;
-}
+std::string fmt(double value) { return app::fmt("%.6g", value); }
 
 std::string triple(const shapes::Vec3& v) { return fmt(v[0]) + " " + fmt(v[1]) + " " + fmt(v[2]); }
 

@@ -3,6 +3,7 @@
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
+#include "text_format.hpp"
 
 #include "app/soil_file.hpp"
 #include "mpm/soil.hpp"
@@ -34,12 +35,6 @@ struct SoilArgs {
     std::string vtk_dir;
     std::string csv;
 };
-
-std::string fmt(const char* format, double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, format, value);
-    return buffer;
-}
 
 // Units of the outcome's extensive quantities: a 2D run is a plane-strain section, so its
 // forces, impulses, masses and energies are per metre of width.

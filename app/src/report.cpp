@@ -1,5 +1,7 @@
 #include "report.hpp"
 
+#include "text_format.hpp"
+
 #include "shapes/rocks.hpp"
 
 #include <cmath>
@@ -8,12 +10,6 @@
 
 namespace rockfall::app {
 namespace {
-
-std::string fmt(const char* format, double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, format, value);
-    return buffer;
-}
 
 nlohmann::json vec_json(const engine::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
