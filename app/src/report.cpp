@@ -76,7 +76,8 @@ void print_summary(std::ostream& out, const engine::Scenario& scenario,
         out << "  reach: " << fmt("%.2f m", rock.reach) << " past the toe; final position x "
             << fmt("%.2f m", p.x()) << ", y " << fmt("%.2f m", p.y()) << ", z "
             << fmt("%.2f m", p.z()) << '\n';
-        out << "  max speed " << fmt("%.2f m/s", rock.max_speed) << ", max bounce height "
+        out << "  max speed " << fmt("%.2f m/s", rock.max_speed) << ", max kinetic energy "
+            << fmt("%.1f J", rock.max_kinetic_energy) << ", max bounce height "
             << fmt("%.3f m", rock.max_bounce_height) << '\n';
         print_stations(out, rock);
         print_hits(out, rock);
@@ -101,7 +102,9 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
                                 {"parallel_speed_m_s", s.parallel_speed},
                                 {"angular_speed_rad_s", s.angular_speed},
                                 {"bounce_height_m", s.bounce_height},
-                                {"rolling_coefficient", s.rolling_coefficient}});
+                                {"rolling_coefficient", s.rolling_coefficient},
+                                {"translational_energy_J", s.translational_energy},
+                                {"rotational_energy_J", s.rotational_energy}});
         }
         nlohmann::json hits = nlohmann::json::array();
         for (const auto& h : rock.wall_hits) {
@@ -134,6 +137,7 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
                          {"reach_m", rock.reach},
                          {"final_position_m", vec_json(rock.final_state.position)},
                          {"max_speed_m_s", rock.max_speed},
+                         {"max_kinetic_energy_J", rock.max_kinetic_energy},
                          {"max_bounce_height_m", rock.max_bounce_height},
                          {"velocity_change", rock.velocity_change},
                          {"stations", stations},

@@ -54,6 +54,7 @@ RockRecorder::RockRecorder(const Scenario& scenario, const shapes::Slope& slope,
 void RockRecorder::start(const RockState& state, double gap) {
     reach_ = state.position.x() - toe_x_;
     max_speed_ = state.velocity.norm();
+    max_energy_ = state.translational_energy + state.rotational_energy;
     max_gap_ = std::max(0.0, gap);
     sample(state);
 }
@@ -62,6 +63,7 @@ void RockRecorder::after_step(const RockState& before, double gap_before, const 
                               double gap_after) {
     reach_ = std::max(reach_, after.position.x() - toe_x_);
     max_speed_ = std::max(max_speed_, after.velocity.norm());
+    max_energy_ = std::max(max_energy_, after.translational_energy + after.rotational_energy);
     max_gap_ = std::max(max_gap_, gap_after);
     for (StationCrossing& station : stations_) {
         const double x = toe_x_ + station.distance_from_toe;
@@ -81,6 +83,7 @@ void RockRecorder::finish(const RockState& final_state, RockOutcome& outcome) {
     }
     outcome.reach = reach_;
     outcome.max_speed = max_speed_;
+    outcome.max_kinetic_energy = max_energy_;
     outcome.max_bounce_height = max_gap_;
     outcome.stations = stations_;
     // V' = (b - a) / a between the first two stations (seed 000, eq. 1).
@@ -118,6 +121,8 @@ StationCrossing RockRecorder::crossing(double distance, const RockState& before,
     station.parallel_speed = velocity.dot(slope_.surface_tangent(x));
     station.angular_speed = omega.norm();
     station.bounce_height = std::max(0.0, lerp(gap_before, gap_after));
+    station.translational_energy = lerp(before.translational_energy, after.translational_energy);
+    station.rotational_energy = lerp(before.rotational_energy, after.rotational_energy);
     // Cr = w r / v (seed 000, eq. 2): ~0 sliding, ~1 rolling.
     station.rolling_coefficient =
         station.parallel_speed > 0.0

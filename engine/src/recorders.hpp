@@ -52,6 +52,7 @@ class RockRecorder {
     long next_sample_ = 0;
     double reach_ = 0.0;
     double max_speed_ = 0.0;
+    double max_energy_ = 0.0;
     double max_gap_ = 0.0;
     std::vector<StationCrossing> stations_;
 };

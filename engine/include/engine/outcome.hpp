@@ -59,6 +59,9 @@ struct StationCrossing {
     double bounce_height = 0.0;
     /// Rolling coefficient Cr = w r / v with r = nominal_size / 2 (seed 000, eq. 2).
     double rolling_coefficient = 0.0;
+    /// Translational and rotational kinetic energy at the crossing, J.
+    double translational_energy = 0.0;
+    double rotational_energy = 0.0;
 };
 
 /// One sample of the wall contact force.
@@ -111,6 +114,8 @@ struct RockOutcome {
     RockState final_state;
     /// Highest speed, m/s.
     double max_speed = 0.0;
+    /// Highest total (translational + rotational) kinetic energy, J.
+    double max_kinetic_energy = 0.0;
     /// Highest gap between the rock's lowest point and the surface, m.
     double max_bounce_height = 0.0;
     /// One entry per scenario station, in the scenario's order.

@@ -1,0 +1,117 @@
+#pragma once
+/// The results database of a sweep: one SQLite file per run, written by the sweep and read by
+/// `rockfall query`, `sqlite3` and pandas. The schema is documented in the README ("Results
+/// database"); every column name carries its unit.
+///
+/// Safety: WAL journal, one transaction per batch, so a crash or kill at any moment leaves a
+/// valid file holding whole samples only. A file is ours when its SQLite application_id is
+/// application_id below; its user_version is the schema version.
+
+#include "engine/outcome.hpp"
+#include "risk/sampling.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+struct sqlite3;
+
+namespace rockfall::db {
+
+/// SQLite application_id of a rockfall results database ("RKFL").
+inline constexpr std::int32_t application_id = 0x524b464c;
+/// Schema version written by this build; files with a newer version are refused.
+inline constexpr int schema_version = 1;
+
+/// A database problem; what() names the file and says what is wrong and what to do.
+class DatabaseError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+/// The run a database holds (one per file).
+struct RunRecord {
+    /// Tool version and build description (compiler, build type).
+    std::string tool_version;
+    std::string build;
+    /// Scenario name, its complete TOML text (resolved) and a hash of that text (hex).
+    std::string scenario_name;
+    std::string scenario_text;
+    std::string scenario_hash;
+    /// Run seed and sampling method ("monte_carlo", "latin_hypercube").
+    std::uint64_t seed = 0;
+    std::string method;
+    /// Planned samples (the sample budget; --samples or the [sweep] table).
+    std::int64_t samples_planned = 0;
+    /// Stop rule as written (e.g. "samples 2000", "until wall_probability +-0.01 at 95%").
+    std::string stop_rule;
+    /// Other settings as a JSON object (threads, trajectory interval, ...).
+    std::string settings_json;
+    /// UTC times, ISO 8601; finished_at empty while running.
+    std::string started_at;
+    std::string finished_at;
+    /// "running", "complete" or "interrupted".
+    std::string status = "running";
+    /// Release zone names, in SweepSpec::zones order.
+    std::vector<std::string> zones;
+};
+
+/// One finished sample: its inputs, its outcome and optionally a decimated trajectory.
+struct SampleRecord {
+    risk::SampleInputs inputs;
+    engine::RockOutcome outcome;
+    /// Trajectory samples, empty unless the sweep records trajectories.
+    std::vector<engine::RockState> trajectory;
+};
+
+/// An open results database.
+class ResultsDb {
+  public:
+    /// Creates a new database at `path` holding `run`; throws DatabaseError when the file
+    /// exists already or cannot be created. Nothing is left behind on failure.
+    static ResultsDb create(const std::filesystem::path& path, const RunRecord& run);
+
+    /// Opens an existing database; throws DatabaseError for a missing, foreign, corrupt or
+    /// newer-schema file, or (writable) a read-only location. Nothing in the file changes.
+    static ResultsDb open(const std::filesystem::path& path, bool writable);
+
+    ResultsDb(ResultsDb&&) noexcept;
+    ResultsDb& operator=(ResultsDb&&) noexcept;
+    ~ResultsDb();
+
+    /// The file's path.
+    const std::filesystem::path& path() const { return path_; }
+
+    /// The run record.
+    RunRecord run() const;
+
+    /// Writes the samples, their outcomes, wall impacts, stations and trajectories in one
+    /// transaction: all of them or none. Throws DatabaseError (e.g. disk full) after rolling
+    /// back.
+    void write_batch(const std::vector<SampleRecord>& samples);
+
+    /// Indices of the samples stored, ascending.
+    std::vector<std::int64_t> stored_samples() const;
+
+    /// Deletes every sample with index >= first (and its rows), in one transaction.
+    void delete_samples_from(std::int64_t first);
+
+    /// Records the end of the run: status and finished_at.
+    void finish(const std::string& status, const std::string& finished_at);
+
+    /// The stored sample with its outcome (trajectory included); empty when absent.
+    std::optional<SampleRecord> sample(std::int64_t index) const;
+
+    /// The underlying connection, for queries.
+    sqlite3* handle() const { return db_; }
+
+  private:
+    ResultsDb(sqlite3* db, std::filesystem::path path);
+    sqlite3* db_ = nullptr;
+    std::filesystem::path path_;
+};
+
+}  // namespace rockfall::db
