@@ -1,0 +1,134 @@
+#pragma once
+/// Running the samples of a sweep on worker threads, one Bullet world per sample, and the
+/// confidence-interval stop rule checked on the completed prefix of samples.
+
+#include "engine/outcome.hpp"
+#include "engine/scenario.hpp"
+#include "risk/sampling.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+namespace rockfall::risk {
+
+/// One finished sample.
+struct SampleResult {
+    /// Its inputs (draw_sample).
+    SampleInputs inputs;
+    /// The outcome of its one rock.
+    engine::RockOutcome outcome;
+    /// Trajectory samples, empty unless RunnerOptions::trajectory_interval > 0.
+    std::vector<engine::RockState> trajectory;
+};
+
+/// Simulates one sample alone: draw_sample, sample_scenario, engine::simulate with the
+/// sample's seed. `trajectory_interval` in s; 0 records no trajectory.
+SampleResult run_sample(const SweepSpec& spec, const engine::Scenario& base, std::int64_t index,
+                        double trajectory_interval = 0.0);
+
+/// Options of a SweepRunner.
+struct RunnerOptions {
+    /// Worker threads (>= 1).
+    int threads = 1;
+    /// Interval between recorded trajectory samples, s (0: none).
+    double trajectory_interval = 0.0;
+};
+
+/// Worker threads that take sample indices from a list in list order and simulate them.
+/// Results come back through collect() in completion order; which thread ran a sample never
+/// changes its result (draw_sample is a pure function of the index).
+class SweepRunner {
+  public:
+    /// Starts the workers on `pending` (indices to run, in the order to take them). The spec
+    /// and base must outlive the runner.
+    SweepRunner(const SweepSpec& spec, const engine::Scenario& base,
+                std::vector<std::int64_t> pending, const RunnerOptions& options);
+    /// Stops the workers (after their current sample) and joins them.
+    ~SweepRunner();
+    SweepRunner(const SweepRunner&) = delete;
+    SweepRunner& operator=(const SweepRunner&) = delete;
+
+    /// Waits up to `timeout` for at least one finished sample, then moves out everything
+    /// finished so far (possibly nothing). Rethrows the first exception a worker raised.
+    std::vector<SampleResult> collect(std::chrono::milliseconds timeout);
+
+    /// Workers take no new sample; those running finish and can still be collected.
+    void stop();
+
+    /// True when no worker runs and nothing is left to collect.
+    bool finished() const;
+
+  private:
+    void work();
+
+    const SweepSpec& spec_;
+    const engine::Scenario& base_;
+    const std::vector<std::int64_t> pending_;
+    const RunnerOptions options_;
+    std::atomic<std::size_t> next_{0};
+    std::atomic<bool> stopping_{false};
+    mutable std::mutex mutex_;
+    std::condition_variable ready_;
+    std::vector<SampleResult> results_;
+    int running_ = 0;
+    std::exception_ptr error_;
+    std::vector<std::thread> workers_;
+};
+
+/// The `--until` stop rule: stop once the Wilson interval of a proportion over the first k
+/// samples has a half-width at most `half_width`, checked at k = check_every, 2 check_every,
+/// ... Using the completed prefix, not whatever finished first, makes the stopping point and
+/// hence the result independent of threads, timing and interruptions.
+struct UntilRule {
+    /// The proportion estimated.
+    enum class Statistic {
+        wall,    ///< share of rocks that hit the reaction wall
+        exceed,  ///< share of rocks whose reach is >= distance
+    };
+    Statistic statistic = Statistic::wall;
+    /// For exceed: horizontal distance past the toe, m.
+    double distance = 0.0;
+    /// Target half-width of the interval, as a proportion in (0, 0.5].
+    double half_width = 0.01;
+    /// Confidence level of the interval, in (0, 1).
+    double confidence = 0.95;
+    /// Samples between checks (>= 1).
+    std::int64_t check_every = 100;
+
+    /// Whether one outcome counts as a success of the proportion.
+    bool success(const engine::RockOutcome& outcome) const;
+    /// Readable form, e.g. "wall probability +-0.01 at 95 %".
+    std::string describe() const;
+};
+
+/// Tracks which samples have finished and finds the first checkpoint meeting the rule.
+class UntilMonitor {
+  public:
+    explicit UntilMonitor(UntilRule rule) : rule_(rule) {}
+    /// Records sample `index`'s success.
+    void add(std::int64_t index, bool success);
+    /// The first checkpoint k (samples 0 .. k-1 all finished) at which the rule holds, if any
+    /// has been reached; never changes once found.
+    std::optional<std::int64_t> stop_at();
+    /// Length of the completed prefix and its successes.
+    std::int64_t prefix() const { return prefix_; }
+    std::int64_t prefix_successes() const { return prefix_successes_; }
+    /// Current half-width of the interval over the completed prefix (1 when empty).
+    double half_width() const;
+
+  private:
+    UntilRule rule_;
+    std::vector<signed char> state_;  // -1 unknown, 0 failure, 1 success, per index
+    std::int64_t prefix_ = 0;
+    std::int64_t prefix_successes_ = 0;
+    std::optional<std::int64_t> stop_;
+};
+
+}  // namespace rockfall::risk

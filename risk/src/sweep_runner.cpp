@@ -1,0 +1,132 @@
+#include "risk/sweep_runner.hpp"
+
+#include "engine/simulation.hpp"
+#include "risk/statistics.hpp"
+
+#include <cassert>
+#include <cstdio>
+#include <string>
+#include <utility>
+
+namespace rockfall::risk {
+
+SampleResult run_sample(const SweepSpec& spec, const engine::Scenario& base, std::int64_t index,
+                        double trajectory_interval) {
+    SampleResult result;
+    result.inputs = draw_sample(spec, base, index);
+    const engine::Scenario scenario = sample_scenario(base, result.inputs);
+    engine::RunOptions options;
+    if (trajectory_interval > 0.0) {
+        options.trajectory_interval = trajectory_interval;
+        options.trajectory = [&result](int, const engine::RockState& state) {
+            result.trajectory.push_back(state);
+        };
+    }
+    engine::Outcome outcome = engine::simulate(scenario, result.inputs.seed, options);
+    assert(outcome.rocks.size() == 1);
+    result.outcome = std::move(outcome.rocks.front());
+    return result;
+}
+
+SweepRunner::SweepRunner(const SweepSpec& spec, const engine::Scenario& base,
+                         std::vector<std::int64_t> pending, const RunnerOptions& options)
+    : spec_(spec), base_(base), pending_(std::move(pending)), options_(options) {
+    assert(options.threads >= 1);
+    running_ = options.threads;
+    workers_.reserve(static_cast<std::size_t>(options.threads));
+    for (int i = 0; i < options.threads; ++i) workers_.emplace_back([this] { work(); });
+}
+
+SweepRunner::~SweepRunner() {
+    stop();
+    for (std::thread& worker : workers_) worker.join();
+}
+
+void SweepRunner::work() {
+    for (;;) {
+        if (stopping_.load()) break;
+        const std::size_t slot = next_.fetch_add(1);
+        if (slot >= pending_.size()) break;
+        try {
+            SampleResult result =
+                run_sample(spec_, base_, pending_[slot], options_.trajectory_interval);
+            const std::lock_guard lock(mutex_);
+            results_.push_back(std::move(result));
+        } catch (...) {
+            const std::lock_guard lock(mutex_);
+            if (!error_) error_ = std::current_exception();
+            stopping_.store(true);
+        }
+        ready_.notify_all();
+    }
+    const std::lock_guard lock(mutex_);
+    --running_;
+    ready_.notify_all();
+}
+
+std::vector<SampleResult> SweepRunner::collect(std::chrono::milliseconds timeout) {
+    std::unique_lock lock(mutex_);
+    ready_.wait_for(lock, timeout, [this] { return !results_.empty() || running_ == 0 || error_; });
+    if (error_) std::rethrow_exception(error_);
+    return std::exchange(results_, {});
+}
+
+void SweepRunner::stop() { stopping_.store(true); }
+
+bool SweepRunner::finished() const {
+    const std::lock_guard lock(mutex_);
+    return running_ == 0 && results_.empty();
+}
+
+bool UntilRule::success(const engine::RockOutcome& outcome) const {
+    switch (statistic) {
+        case Statistic::wall:
+            return !outcome.wall_hits.empty();
+        case Statistic::exceed:
+            return outcome.reach >= distance;
+    }
+    return false;
+}
+
+std::string UntilRule::describe() const {
+    char text[160];
+    if (statistic == Statistic::wall) {
+        std::snprintf(text, sizeof text,
+                      "until the wall probability is known to +-%g at %g %% (checked every %lld "
+                      "samples)",
+                      half_width, 100.0 * confidence, static_cast<long long>(check_every));
+    } else {
+        std::snprintf(text, sizeof text,
+                      "until P(reach >= %g m) is known to +-%g at %g %% (checked every %lld "
+                      "samples)",
+                      distance, half_width, 100.0 * confidence,
+                      static_cast<long long>(check_every));
+    }
+    return text;
+}
+
+void UntilMonitor::add(std::int64_t index, bool success) {
+    assert(index >= 0);
+    const auto slot = static_cast<std::size_t>(index);
+    if (slot >= state_.size()) state_.resize(slot + 1, -1);
+    assert(state_[slot] == -1 && "a sample is recorded once");
+    state_[slot] = success ? 1 : 0;
+    while (static_cast<std::size_t>(prefix_) < state_.size() &&
+           state_[static_cast<std::size_t>(prefix_)] != -1) {
+        prefix_successes_ += state_[static_cast<std::size_t>(prefix_)];
+        ++prefix_;
+        if (!stop_ && prefix_ % rule_.check_every == 0 && half_width() <= rule_.half_width) {
+            stop_ = prefix_;
+        }
+    }
+}
+
+std::optional<std::int64_t> UntilMonitor::stop_at() { return stop_; }
+
+double UntilMonitor::half_width() const {
+    if (prefix_ == 0) return 1.0;
+    const Interval interval = wilson_interval(prefix_successes_, prefix_, rule_.confidence);
+    return 0.5 * (interval.upper - interval.lower);
+}
+
+}  // namespace rockfall::risk
