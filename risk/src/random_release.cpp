@@ -42,11 +42,15 @@ std::size_t uniform_index(std::mt19937_64& generator, std::size_t n) {
     return index < n ? index : n - 1;
 }
 
+engine::Vec3 orientation_deg_from_uniforms(double u1, double u2, double u3) {
+    return {-180.0 + 360.0 * u1, std::asin(-1.0 + 2.0 * u2) * 180.0 / pi, -180.0 + 360.0 * u3};
+}
+
 engine::Vec3 uniform_orientation_deg(std::mt19937_64& generator) {
-    const double first = uniform(generator, -180.0, 180.0);
-    const double middle = std::asin(uniform(generator, -1.0, 1.0)) * 180.0 / pi;
-    const double last = uniform(generator, -180.0, 180.0);
-    return {first, middle, last};
+    const double u1 = uniform01(generator);
+    const double u2 = uniform01(generator);
+    const double u3 = uniform01(generator);
+    return orientation_deg_from_uniforms(u1, u2, u3);
 }
 
 engine::Scenario random_rock_scenario(const engine::Scenario& base, std::uint64_t seed,

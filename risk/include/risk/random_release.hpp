@@ -45,10 +45,14 @@ double uniform(std::mt19937_64& generator, double lo, double hi);
 /// n * 2^-53).
 std::size_t uniform_index(std::mt19937_64& generator, std::size_t n);
 
-/// A uniformly distributed rotation as x-y-z Euler angles, degrees: the first and last angle
-/// uniform in [-180, 180), the middle one arcsine-distributed in [-90, 90] (density
+/// The rotation of three uniforms u1, u2, u3 in [0, 1) as x-y-z Euler angles, degrees:
+/// (360 u1 - 180, asin(2 u2 - 1), 360 u3 - 180). Uniform inputs give the first and last angle
+/// uniform in [-180, 180) and the middle one arcsine-distributed in [-90, 90] (density
 /// cos(b) / 2), which is the Haar measure for any Tait-Bryan convention with y in the middle,
-/// intrinsic or extrinsic. Three draws.
+/// intrinsic or extrinsic (the volume element of SO(3) is cos(b) da db dc).
+engine::Vec3 orientation_deg_from_uniforms(double u1, double u2, double u3);
+
+/// A uniformly distributed rotation (orientation_deg_from_uniforms of three uniform01 draws).
 engine::Vec3 uniform_orientation_deg(std::mt19937_64& generator);
 
 /// A copy of `base` (at least one rock) holding one rock: base.rocks[0] with four things drawn

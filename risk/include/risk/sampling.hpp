@@ -6,6 +6,7 @@
 #include "risk/distribution.hpp"
 #include "shapes/rocks.hpp"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -20,8 +21,10 @@ struct ReleaseZone {
     double weight = 1.0;
     /// Distance along the surface from the crown, m (support inside [0, toe)).
     Distribution distance = fixed(0.5);
-    /// Lateral position y, m; clamped per sample to the band where the rock fits between the
-    /// slope's edges: |y| <= width / 2 - bounding radius - lateral_margin.
+    /// Lateral position y, m. Each sample draws it conditioned on the band where its rock fits
+    /// between the slope's edges, |y| <= width / 2 - bounding radius - lateral_margin
+    /// (inverse_cdf_within): uniform across the whole width gives uniform across the band, as
+    /// random_rock_scenario draws it. A fixed value, or a support outside the band, is clamped.
     Distribution lateral = fixed(0.0);
 };
 
@@ -41,9 +44,10 @@ struct SweepSpec {
     /// Shape families and their weights (same length, weights >= 0, one positive).
     std::vector<shapes::RockKind> kinds = {shapes::RockKind::sphere};
     std::vector<double> kind_weights = {1.0};
-    /// Nominal size (volume-equivalent diameter), m; support inside [0.01, 10].
+    /// Nominal size (volume-equivalent diameter), m; support inside the scenario's range of
+    /// rocks.size ([0.01, 10]; app::validate_sweep checks supports against the scenario's rules).
     Distribution size = fixed(0.2);
-    /// Density, kg/m3; support inside [500, 10000].
+    /// Density, kg/m3; support inside the scenario's range ([500, 10000]).
     Distribution density = fixed(2600.0);
     /// Rock contact coefficients; supports inside the scenario's ranges ([0, 2], [0, 1], [0, 1]).
     Distribution friction = fixed(0.6);
@@ -65,13 +69,33 @@ struct SweepSpec {
 /// Lower-case name of a method ("monte_carlo", "latin_hypercube").
 std::string to_string(SweepSpec::Method method);
 
-/// The spec that varies nothing: every input fixed at base.rocks[0]'s value, one zone at its
-/// release point, kinds = {its kind}, random_orientation = its random_orientation.
+/// The spec that varies nothing: every input fixed at base.rocks[0]'s value, one zone
+/// "release" at its release point, kinds = {its kind}, random_orientation = its
+/// random_orientation, speed = its velocity along the surface tangent there, spin = its spin's
+/// y component. Throws std::invalid_argument when base has no rock.
 SweepSpec sweep_defaults(const engine::Scenario& base);
 
-/// Throws std::invalid_argument naming the key path ("sweep.rock.size", ...), the value and
-/// the allowed range for any impossible parameter, including supports outside the ranges
-/// above and release distances outside the slope above the toe.
+/// One problem of a sweep spec.
+struct SweepProblem {
+    /// Key path in the scenario file: "sweep.rock.size", "sweep.release.zones[1].weight", or
+    /// "rocks[0].release.velocity" for a base value the sweep cannot keep.
+    std::string key;
+    /// The value and the rule it breaks: "uniform [0.4, 0.2] m: min = 0.4, max = 0.2: must
+    /// have min < max".
+    std::string message;
+};
+
+/// Every problem of the spec against base: a base without rocks, samples < 1, kinds and
+/// weights, each distribution's parameters (find_problems), speeds below 0, zone names, weights
+/// and count, lateral_margin < 0, a largest rock that does not fit across the slope with its
+/// margin, and a base rock's velocity off the surface tangent or spin off the across-slope
+/// axis (a sweep sets both from speed and spin). Not checked here: the scenario's own ranges
+/// of size, density, material and release distance, which app::validate_sweep applies to the
+/// supports with the scenario file's rules, where they are defined.
+std::vector<SweepProblem> find_problems(const SweepSpec& spec, const engine::Scenario& base);
+
+/// Throws std::invalid_argument listing find_problems(spec, base), one per line as
+/// "key = message", when there is any.
 void validate(const SweepSpec& spec, const engine::Scenario& base);
 
 /// Sample i's inputs, after clamping (what the engine runs).
@@ -100,14 +124,35 @@ struct SampleInputs {
     double mass = 0.0;
 };
 
+/// Number of coordinates of a sample's point in the unit hypercube: zone, kind, size, density,
+/// friction, restitution, rolling resistance, distance, lateral, speed, spin, and three for the
+/// orientation, in that order.
+inline constexpr std::size_t sample_dimensions = 14;
+
+/// Sample `index`'s point in the open unit hypercube (0, 1)^sample_dimensions, a pure function
+/// of (spec.seed, spec.method, spec.samples, index). Its own generator,
+/// make_generator(hash of seed and index), draws one uniform_open01 v_d per coordinate.
+/// Monte Carlo: u_d = v_d. Latin hypercube (McKay, Beckman and Conover 1979): u_d = (pi_d(index)
+/// + v_d) / samples, with pi_d a keyed pseudo-random permutation of [0, samples) (a balanced
+/// Feistel network over the next power of 4, cycle-walked into range: Black and Rogaway 2002),
+/// so that each of the `samples` strata of every coordinate holds exactly one sample of
+/// 0..samples-1, with O(1) memory and no dependence on the order samples are drawn in. Throws
+/// std::invalid_argument for index < 0 or, for Latin hypercube, index >= samples.
+std::array<double, sample_dimensions> unit_point(const SweepSpec& spec, std::int64_t index);
+
 /// Sample `index` (0 <= index; < spec.samples for Latin hypercube) of a validated spec: a pure
-/// function of (spec, base, index). The unit hypercube has one coordinate per input in a fixed
-/// order (zone, kind, size, density, friction, restitution, rolling resistance, distance,
-/// lateral, speed, spin, three for the orientation), all drawn even for fixed inputs so that
-/// varying one input never changes another's draws.
+/// function of (spec, base, index). Each input is inverse_cdf (choose for zone and kind) of its
+/// coordinate of unit_point, every coordinate drawn even for fixed inputs so that varying one
+/// input never changes another's draws. The engine seed is a hash of (spec.seed, index) on a
+/// stream of its own. Without random_orientation the orientation is base.rocks[0]'s
+/// orientation_deg.
 SampleInputs draw_sample(const SweepSpec& spec, const engine::Scenario& base, std::int64_t index);
 
-/// The one-rock scenario that sample runs: base with rocks = {base.rocks[0] with the inputs}.
+/// The one-rock scenario that sample runs: base with rocks = {base.rocks[0] with the inputs}:
+/// kind, size, density, material, release distance and lateral; velocity = speed times the
+/// downslope surface tangent at the release point; spin = spin about +y (across the slope),
+/// which rolls a rock downslope when positive (omega y x r n = r omega t); orientation_deg
+/// from the inputs with random_orientation false, so the scenario alone fixes the rock.
 engine::Scenario sample_scenario(const engine::Scenario& base, const SampleInputs& inputs);
 
 }  // namespace rockfall::risk
