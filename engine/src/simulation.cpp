@@ -89,7 +89,7 @@ Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options
     outcome_.rocks.resize(scenario.rocks.size());
     for (std::size_t i = 0; i < scenario.rocks.size(); ++i) {
         const RockRelease& spec = scenario.rocks[i];
-        shapes::RockGeometry geometry = shapes::make_rock(spec.rock.kind, spec.rock.size);
+        shapes::RockGeometry geometry = spec.rock.geometry();
         const double rolling_radius = 0.5 * geometry.nominal_size;
         const BodyState initial = release_state(slope_, geometry, spec.release, random);
         const int body = world_.add_rock(geometry, spec.rock, initial);

@@ -12,9 +12,6 @@
 namespace rockfall::shapes {
 namespace {
 
-constexpr double kMinNominalSize = 1e-3;
-constexpr double kMaxNominalSize = 100.0;
-
 // Half-axes of the seed's blocky shapes before scaling (seed 000, Figure 3: a roughly equant
 // block and a slab; the paper gives no dimensions, these ratios are our reading of the photos).
 const Vec3 kMassiveHalfAxes(1.0, 0.9, 0.8);
@@ -27,10 +24,10 @@ constexpr double kCornerCut = 0.2;
 constexpr int kIcosphereLevels = 3;
 
 void check_nominal_size(double nominal_size) {
-    if (!(nominal_size >= kMinNominalSize && nominal_size <= kMaxNominalSize)) {
+    if (!(nominal_size >= min_nominal_size && nominal_size <= max_nominal_size)) {
         std::ostringstream message;
         message << "rock nominal_size = " << nominal_size << " m: must be within ["
-                << kMinNominalSize << ", " << kMaxNominalSize << "] m";
+                << min_nominal_size << ", " << max_nominal_size << "] m";
         throw GeometryError(message.str());
     }
 }
@@ -133,6 +130,8 @@ std::string_view to_string(RockKind kind) {
             return "massive";
         case RockKind::planar:
             return "planar";
+        case RockKind::custom:
+            return "custom";
     }
     assert(false && "unknown RockKind");
     return "unknown";
@@ -149,9 +148,18 @@ RockGeometry make_rock(RockKind kind, double nominal_size) {
         case RockKind::planar:
             return rock_from_hull(convex_hull(truncated_box_points(kPlanarHalfAxes)), kind,
                                   nominal_size);
+        case RockKind::custom:
+            throw GeometryError(
+                "rock kind 'custom' has no shape of its own: give it a hull (a mesh file, a "
+                "catalogue entry or a generated rock)");
     }
     assert(false && "unknown RockKind");
     return {};
+}
+
+RockGeometry make_rock(const CustomShape& shape, double nominal_size) {
+    check_nominal_size(nominal_size);
+    return rock_from_hull(shape.hull, RockKind::custom, nominal_size);
 }
 
 RockGeometry rock_from_hull(const ConvexPolyhedron& hull, RockKind kind, double nominal_size) {

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -59,14 +60,24 @@ struct WallContact {
 
 /// One rock: its shape, size and material.
 struct RockSpec {
-    /// Shape family.
+    /// Shape family; RockKind::custom exactly when `shape` is set.
     shapes::RockKind kind = shapes::RockKind::sphere;
-    /// Nominal size: volume-equivalent diameter, m, in [0.01, 10].
+    /// Nominal size: volume-equivalent diameter, m, in [0.01, 10]; a custom shape is scaled to
+    /// it.
     double size = 0.2;
     /// Density, kg/m3, in [500, 10000].
     double density = 2600.0;
     /// Contact coefficients of the rock.
     Material material;
+    /// The hull of a custom rock (a mesh file, a catalogue entry, a generated rock), at any
+    /// scale; null for the families. Shared, as many rocks may use one shape.
+    std::shared_ptr<const shapes::CustomShape> shape;
+
+    /// The rock's geometry in its body frame, as the engine simulates it: the one place that
+    /// turns a kind or a custom shape and a size into a rock.
+    shapes::RockGeometry geometry() const {
+        return shape ? shapes::make_rock(*shape, size) : shapes::make_rock(kind, size);
+    }
 };
 
 /// How and where a rock starts.

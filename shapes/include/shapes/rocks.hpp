@@ -4,6 +4,7 @@
 #include "shapes/mass_properties.hpp"
 #include "shapes/polyhedron.hpp"
 
+#include <string>
 #include <string_view>
 
 namespace rockfall::shapes {
@@ -13,9 +14,10 @@ enum class RockKind {
     sphere,   ///< an exact sphere
     massive,  ///< blocky and roughly equant
     planar,   ///< slab-like
+    custom,   ///< any convex hull given by the user: a mesh file, a catalogue entry, a generator
 };
 
-/// Lower-case name of a kind ("sphere", "massive", "planar").
+/// Lower-case name of a kind ("sphere", "massive", "planar", "custom").
 std::string_view to_string(RockKind kind);
 
 /// A rock in its body frame: centroid at the origin, principal axes along x, y, z with the
@@ -40,12 +42,27 @@ struct RockGeometry {
     double bounding_radius = 0.0;
 };
 
+/// Smallest accepted nominal size (volume-equivalent diameter) of any rock, m.
+inline constexpr double min_nominal_size = 1e-3;
+/// Largest accepted nominal size of any rock, m.
+inline constexpr double max_nominal_size = 100.0;
+
+/// A rock shape given as a convex hull instead of a family (kind RockKind::custom).
+struct CustomShape {
+    /// Name shown in reports: the catalogue entry, the mesh file's stem or the generator.
+    std::string name;
+    /// The hull in metres, at any position, orientation and scale.
+    ConvexPolyhedron hull;
+};
+
 /// The seed's shapes at a nominal (volume-equivalent) diameter in m, within [1e-3, 100].
 /// Massive: a chamfered block with axis ratios 1 : 0.9 : 0.8. Planar: a chamfered slab with
 /// axis ratios 1 : 0.8 : 0.35. Both have each corner cut off at 0.2 of the shortest half-axis
 /// along its three edges. Deterministic: the same size gives the same hull. Throws
-/// GeometryError for a size outside the range.
+/// GeometryError for a size outside the range, or for kind custom (which needs a hull).
 RockGeometry make_rock(RockKind kind, double nominal_size);
+/// A custom shape as a rock of kind custom: rock_from_hull(shape.hull, custom, nominal_size).
+RockGeometry make_rock(const CustomShape& shape, double nominal_size);
 
 /// Wraps any convex hull as a rock: moves it to its centroid, rotates it onto its principal
 /// axes and scales it to the given volume-equivalent diameter (unchanged when size <= 0;

@@ -1,0 +1,58 @@
+#pragma once
+/// Mesh files: rock hulls from any format assimp reads (tested: OBJ, STL, PLY, OFF, glTF,
+/// GLB), and the hull written back as OBJ or STL.
+
+#include "shapes/polyhedron.hpp"
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rockfall::shapes {
+
+/// How a mesh's coordinates become the rock: coordinates are multiplied by `scale`, then the
+/// hull is rescaled to `size` or `long_axis` when one of them is > 0 (not both).
+struct MeshScaling {
+    /// Factor from the file's units to metres, finite and > 0 (0.001 for a mesh in mm).
+    double scale = 1.0;
+    /// Target volume-equivalent diameter, m; 0 keeps the scaled mesh's own size; else within
+    /// [min_nominal_size, max_nominal_size].
+    double size = 0.0;
+    /// Target long axis a (extent along the axis of least inertia), m; 0 keeps the size.
+    double long_axis = 0.0;
+};
+
+/// Lower-case file extensions (with the dot) of every format assimp reads, e.g. ".obj".
+std::vector<std::string> mesh_extensions();
+
+/// Whether assimp reads files with this name's extension (case-insensitive).
+bool is_mesh_file(const std::filesystem::path& file);
+
+/// Every vertex of every mesh in the file, in metres as written (node transforms applied).
+/// Throws GeometryError naming the file for a missing or unreadable file, an unknown format,
+/// a file assimp cannot parse, a file without vertices and a non-finite coordinate. assimp
+/// reads coordinates in single precision (Debian builds it with float ai_real).
+std::vector<Vec3> read_mesh_vertices(const std::filesystem::path& file);
+
+/// The convex hull (Qhull) of a mesh file's vertices, scaled as `scaling` says. Throws
+/// GeometryError naming the file for every problem of read_mesh_vertices, a bad scaling,
+/// vertices that span no volume (collinear or coplanar), a mesh that lies further from the
+/// origin than 1000 times its own extent (single precision would blur its shape), and a rock
+/// whose volume-equivalent diameter ends outside [min_nominal_size, max_nominal_size] m.
+ConvexPolyhedron read_mesh_hull(const std::filesystem::path& file, const MeshScaling& scaling = {});
+
+/// A hull scaled as `scaling` says; `what` names it in messages (e.g. "mesh 'rock.obj'").
+/// Throws GeometryError for a bad scaling or a result outside the accepted size range.
+ConvexPolyhedron scaled_hull(const ConvexPolyhedron& hull, const MeshScaling& scaling,
+                             std::string_view what);
+
+/// Writes the hull as Wavefront OBJ: one `v x y z` line per vertex (m, shortest exact
+/// decimal), one `f i j k` line per outward triangle; `comment` (may be several lines) first.
+void write_obj(std::ostream& out, const ConvexPolyhedron& hull, std::string_view comment);
+
+/// Writes the hull as ASCII STL named `name`, with each triangle's outward unit normal.
+void write_stl(std::ostream& out, const ConvexPolyhedron& hull, std::string_view name);
+
+}  // namespace rockfall::shapes

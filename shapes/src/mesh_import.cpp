@@ -1,0 +1,204 @@
+#include "shapes/mass_properties.hpp"
+#include "shapes/measures.hpp"
+#include "shapes/mesh_io.hpp"
+#include "shapes/rocks.hpp"
+
+#include <Eigen/Geometry>
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+namespace rockfall::shapes {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Single-precision coordinates (assimp's ai_real) resolve 6e-8 of their magnitude; a mesh
+// further from the origin than this many times its extent loses more than 1e-4 of its shape.
+constexpr double kMaxOffsetOverExtent = 1000.0;
+
+std::string quoted(const fs::path& file) { return "'" + file.string() + "'"; }
+
+[[noreturn]] void fail(const fs::path& file, const std::string& problem) {
+    throw GeometryError("mesh file " + quoted(file) + ": " + problem);
+}
+
+std::string lower_extension(const fs::path& file) {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
+std::string describe(const Vec3& p) {
+    std::ostringstream out;
+    out << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+    return out.str();
+}
+
+void check_readable(const fs::path& file) {
+    std::error_code error;
+    const fs::file_status status = fs::status(file, error);
+    if (!fs::exists(status)) fail(file, "no such file");
+    if (fs::is_directory(status)) fail(file, "is a directory, not a mesh file");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) fail(file, std::string("cannot be opened: ") + std::strerror(errno));
+}
+
+Eigen::Matrix4d to_eigen(const aiMatrix4x4& m) {
+    Eigen::Matrix4d out;
+    out << m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3,
+        m.d4;
+    return out;
+}
+
+// Vertices of the meshes a node and its children place, through the product of the node
+// transforms from the root (assimp stores each mesh in its node's local frame).
+void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& parent,
+             std::vector<Vec3>& points) {
+    const Eigen::Matrix4d transform = parent * to_eigen(node.mTransformation);
+    const Eigen::Affine3d affine(transform);
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+        const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
+        for (unsigned k = 0; k < mesh.mNumVertices; ++k) {
+            const aiVector3D& v = mesh.mVertices[k];
+            points.push_back(affine * Vec3(v.x, v.y, v.z));
+        }
+    }
+    for (unsigned i = 0; i < node.mNumChildren; ++i) {
+        collect(scene, *node.mChildren[i], transform, points);
+    }
+}
+
+double factor_to_size(const ConvexPolyhedron& hull, const MeshScaling& scaling) {
+    const MassProperties properties = mass_properties(hull);
+    if (scaling.size > 0.0) return scaling.size / equivalent_diameter(properties.volume);
+    if (scaling.long_axis > 0.0) return scaling.long_axis / axis_lengths(hull, properties)[0];
+    return 1.0;
+}
+
+void check_scaling(const MeshScaling& scaling, std::string_view what) {
+    std::ostringstream problem;
+    if (!(std::isfinite(scaling.scale) && scaling.scale > 0.0)) {
+        problem << "scale = " << scaling.scale << ": must be finite and > 0";
+    } else if (!(std::isfinite(scaling.size) && scaling.size >= 0.0)) {
+        problem << "size = " << scaling.size << " m: must be finite and >= 0";
+    } else if (!(std::isfinite(scaling.long_axis) && scaling.long_axis >= 0.0)) {
+        problem << "long_axis = " << scaling.long_axis << " m: must be finite and >= 0";
+    } else if (scaling.size > 0.0 && scaling.long_axis > 0.0) {
+        problem << "size = " << scaling.size << " m and long_axis = " << scaling.long_axis
+                << " m: give at most one of them";
+    }
+    if (!problem.str().empty()) throw GeometryError(std::string(what) + ": " + problem.str());
+}
+
+}  // namespace
+
+std::vector<std::string> mesh_extensions() {
+    Assimp::Importer importer;
+    std::string list;
+    importer.GetExtensionList(list);
+    std::vector<std::string> extensions;
+    std::istringstream in(list);
+    for (std::string item; std::getline(in, item, ';');) {
+        // assimp lists "*.obj"; keep ".obj".
+        if (item.size() > 1 && item[0] == '*') extensions.push_back(item.substr(1));
+    }
+    return extensions;
+}
+
+bool is_mesh_file(const fs::path& file) {
+    const std::string extension = lower_extension(file);
+    if (extension.size() < 2) return false;
+    return Assimp::Importer().IsExtensionSupported(extension);
+}
+
+std::vector<Vec3> read_mesh_vertices(const fs::path& file) {
+    check_readable(file);
+    if (!is_mesh_file(file)) {
+        const std::string extension = file.extension().string();
+        fail(file, "unknown mesh format" +
+                       (extension.empty() ? std::string(" (no file extension)")
+                                          : " '" + extension + "'") +
+                       ": use .obj, .stl, .ply, .off, .gltf or .glb (or another format assimp "
+                       "reads)");
+    }
+    // No post-processing: the hull needs only the vertices, and assimp's steps reject point
+    // clouds (meshes without faces). assimp logs nothing unless a logger is created.
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(file.string(), 0);
+    if (scene == nullptr) {
+        fail(file, "cannot be read as " + lower_extension(file) + ": " + importer.GetErrorString());
+    }
+    std::vector<Vec3> points;
+    if (scene->mRootNode != nullptr) {
+        collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), points);
+    }
+    if (points.empty()) fail(file, "contains no vertices (empty mesh)");
+    const auto bad =
+        std::find_if(points.begin(), points.end(), [](const Vec3& p) { return !p.allFinite(); });
+    if (bad != points.end()) {
+        const auto count = std::count_if(points.begin(), points.end(),
+                                         [](const Vec3& p) { return !p.allFinite(); });
+        fail(file, std::to_string(count) + " of " + std::to_string(points.size()) +
+                       " vertices have non-finite coordinates, e.g. " + describe(*bad));
+    }
+    return points;
+}
+
+ConvexPolyhedron read_mesh_hull(const fs::path& file, const MeshScaling& scaling) {
+    const std::vector<Vec3> points = read_mesh_vertices(file);
+    Eigen::AlignedBox3d box;
+    double offset = 0.0;
+    for (const Vec3& p : points) {
+        box.extend(p);
+        offset = std::max(offset, p.cwiseAbs().maxCoeff());
+    }
+    const double extent = box.diagonal().norm();
+    if (extent > 0.0 && offset > kMaxOffsetOverExtent * extent) {
+        std::ostringstream problem;
+        problem << "the mesh lies " << offset << " from the origin but is only " << extent
+                << " across: single-precision coordinates would blur its shape; move it "
+                   "near the origin";
+        fail(file, problem.str());
+    }
+    ConvexPolyhedron hull;
+    try {
+        hull = convex_hull(points);
+    } catch (const GeometryError& error) {
+        fail(file, error.what());
+    }
+    return scaled_hull(hull, scaling, "mesh file " + quoted(file));
+}
+
+ConvexPolyhedron scaled_hull(const ConvexPolyhedron& hull, const MeshScaling& scaling,
+                             std::string_view what) {
+    check_scaling(scaling, what);
+    ConvexPolyhedron out = hull;
+    for (Vec3& v : out.vertices) v *= scaling.scale;
+    const double factor = factor_to_size(out, scaling);
+    for (Vec3& v : out.vertices) v *= factor;
+    const double size = equivalent_diameter(mass_properties(out).volume);
+    if (!(size >= min_nominal_size && size <= max_nominal_size)) {
+        std::ostringstream problem;
+        problem << what << ": the rock's volume-equivalent diameter is " << size
+                << " m, outside the accepted [" << min_nominal_size << ", " << max_nominal_size
+                << "] m";
+        if (scaling.size == 0.0 && scaling.long_axis == 0.0) {
+            problem << " (coordinates are read as metres times scale = " << scaling.scale
+                    << "; give a scale such as 0.001 for millimetres, or a size)";
+        }
+        throw GeometryError(problem.str());
+    }
+    return out;
+}
+
+}  // namespace rockfall::shapes
