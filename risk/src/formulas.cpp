@@ -2,8 +2,9 @@
 
 #include "risk/formulas.hpp"
 
+#include "validation.hpp"
+
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -18,12 +19,7 @@ constexpr double pa_per_kn_m2 = 1.0e3;
 // Numeric factor of the handbook formula, valid only with m g in kN, lambda in kN/m2, H in m.
 constexpr double jra_factor = 2.108;
 
-void require_positive(const char* field, double value, const char* unit) {
-    if (std::isfinite(value) && value > 0.0) return;
-    std::ostringstream message;
-    message << field << " = " << value << ' ' << unit << ": must be finite and > 0";
-    throw std::invalid_argument(message.str());
-}
+using detail::require_positive;
 
 void require_valid(const ImpactCoefficients& coefficients) {
     require_positive("lambda", coefficients.lambda, "Pa");
