@@ -79,6 +79,19 @@ double uniform_open01(std::mt19937_64& generator) {
     return (static_cast<double>(generator() >> 12) + 0.5) * two_to_minus_52;
 }
 
+// The rock a sample of this kind and size runs: a family, or the base rock's custom shape.
+engine::RockSpec rock_of(const engine::Scenario& base, shapes::RockKind kind, double size) {
+    engine::RockSpec rock = base.rocks.front().rock;
+    rock.kind = kind;
+    rock.size = size;
+    if (kind != shapes::RockKind::custom) rock.shape = nullptr;
+    return rock;
+}
+
+bool lacks_shape(const engine::Scenario& base, shapes::RockKind kind) {
+    return kind == shapes::RockKind::custom && base.rocks.front().rock.shape == nullptr;
+}
+
 std::string vector_text(const engine::Vec3& v) {
     return "[" + number_text(v.x()) + ", " + number_text(v.y()) + ", " + number_text(v.z()) + "]";
 }
@@ -92,7 +105,8 @@ bool check_distribution(std::vector<SweepProblem>& problems, const std::string& 
     return rules.empty();
 }
 
-void check_kinds(std::vector<SweepProblem>& problems, const SweepSpec& spec) {
+void check_kinds(std::vector<SweepProblem>& problems, const SweepSpec& spec,
+                 const engine::Scenario& base) {
     const std::string key = "sweep.rock.kind";
     if (spec.kinds.empty()) {
         problems.push_back({key, "[]: must name at least one shape"});
@@ -110,6 +124,11 @@ void check_kinds(std::vector<SweepProblem>& problems, const SweepSpec& spec) {
         if (std::count(spec.kinds.begin(), spec.kinds.begin() + static_cast<std::ptrdiff_t>(i),
                        spec.kinds[i]) > 0) {
             problems.push_back({key, "\"" + name + "\" is listed twice: list each shape once"});
+        }
+        if (lacks_shape(base, spec.kinds[i])) {
+            problems.push_back({key,
+                                "\"custom\": stands for the base rock's custom shape (mesh, "
+                                "catalogue entry or vertices), and rocks[0] has none"});
         }
         const double weight = spec.kind_weights[i];
         if (!(weight >= 0.0 && std::isfinite(weight))) {
@@ -155,10 +174,11 @@ void check_lateral_room(std::vector<SweepProblem>& problems, const SweepSpec& sp
     const double largest = support(spec.size).upper;
     if (!std::isfinite(largest) || largest <= 0.0) return;
     for (std::size_t i = 0; i < spec.kinds.size(); ++i) {
-        if (!(spec.kind_weights[i] > 0.0)) continue;
+        if (!(spec.kind_weights[i] > 0.0) || lacks_shape(base, spec.kinds[i])) continue;
         // The bounding radius scales with the size; the unit rock keeps make_rock in its range
         // whatever size is asked for (the size's own range is the scenario's rule).
-        const double radius = largest * shapes::make_rock(spec.kinds[i], 1.0).bounding_radius;
+        const double radius =
+            largest * rock_of(base, spec.kinds[i], 1.0).geometry().bounding_radius;
         const double half_room = 0.5 * base.slope.width - radius - spec.lateral_margin;
         if (half_room < 0.0) {
             problems.push_back(
@@ -248,7 +268,7 @@ std::vector<SweepProblem> find_problems(const SweepSpec& spec, const engine::Sce
     if (spec.samples < 1) {
         problems.push_back({"sweep.samples", std::to_string(spec.samples) + ": must be >= 1"});
     }
-    check_kinds(problems, spec);
+    check_kinds(problems, spec, base);
     const bool size_ok = check_distribution(problems, "sweep.rock.size", spec.size, "m");
     check_distribution(problems, "sweep.rock.density", spec.density, "kg/m3");
     check_distribution(problems, "sweep.rock.material.friction", spec.friction, "");
@@ -334,7 +354,7 @@ SampleInputs draw_sample(const SweepSpec& spec, const engine::Scenario& base, st
 
     const ReleaseZone& zone = spec.zones[s.zone];
     s.release_distance = inverse_cdf(zone.distance, u[distance_coordinate]);
-    const shapes::RockGeometry rock = shapes::make_rock(s.kind, s.size);
+    const shapes::RockGeometry rock = rock_of(base, s.kind, s.size).geometry();
     // validate() checked the largest rock against the band; rounding may leave -1e-17 here.
     const double half_band =
         std::max(0.0, 0.5 * base.slope.width - rock.bounding_radius - spec.lateral_margin);
@@ -354,8 +374,7 @@ SampleInputs draw_sample(const SweepSpec& spec, const engine::Scenario& base, st
 engine::Scenario sample_scenario(const engine::Scenario& base, const SampleInputs& inputs) {
     assert(!base.rocks.empty());
     engine::RockRelease rock = base.rocks.front();
-    rock.rock.kind = inputs.kind;
-    rock.rock.size = inputs.size;
+    rock.rock = rock_of(base, inputs.kind, inputs.size);
     rock.rock.density = inputs.density;
     rock.rock.material = inputs.material;
     rock.release.distance = inputs.release_distance;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <random>
 #include <stdexcept>
@@ -378,4 +379,32 @@ TEST_CASE("impossible sweep specs are rejected naming the key", "[risk][sampling
     CHECK_THROWS_AS(risk::unit_point(latin, latin.samples), std::invalid_argument);
     CHECK_THROWS_AS(risk::unit_point(good, -1), std::invalid_argument);
     CHECK_NOTHROW(risk::unit_point(good, good.samples + 5));
+}
+
+TEST_CASE("kind custom samples the base rock's own shape", "[risk][sampling]") {
+    engine::Scenario base;
+    engine::RockSpec& rock = base.rocks.front().rock;
+    rock.kind = RockKind::custom;
+    rock.shape = std::make_shared<const shapes::CustomShape>(
+        shapes::CustomShape{"slab", shapes::make_rock(RockKind::planar, 1.0).hull});
+    risk::SweepSpec spec = risk::sweep_defaults(base);
+    REQUIRE(spec.kinds == std::vector<RockKind>{RockKind::custom});
+    spec.kinds = {RockKind::sphere, RockKind::custom};
+    spec.kind_weights = {1.0, 1.0};
+    spec.size = uniform(0.2, 0.4);
+    REQUIRE(risk::find_problems(spec, base).empty());
+    int custom = 0;
+    for (std::int64_t i = 0; i < 40; ++i) {
+        const risk::SampleInputs s = risk::draw_sample(spec, base, i);
+        const engine::Scenario scenario = risk::sample_scenario(base, s);
+        REQUIRE_NOTHROW(app::validate_scenario(scenario));
+        const engine::RockSpec& drawn = scenario.rocks.front().rock;
+        CHECK((drawn.shape != nullptr) == (s.kind == RockKind::custom));
+        CHECK_THAT(s.mass, WithinRel(drawn.density * drawn.geometry().properties.volume, 1e-12));
+        custom += s.kind == RockKind::custom ? 1 : 0;
+    }
+    CHECK(custom > 0);
+    CHECK(custom < 40);
+    // Without a custom base rock, kind custom has no shape to stand for.
+    CHECK(problem_keys(spec, engine::Scenario{}) == std::vector<std::string>{"sweep.rock.kind"});
 }

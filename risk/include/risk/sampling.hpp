@@ -41,7 +41,8 @@ struct SweepSpec {
     std::uint64_t seed = 1;
     /// Planned number of samples (>= 1); Latin hypercube strata are 1 / samples wide.
     std::int64_t samples = 1000;
-    /// Shape families and their weights (same length, weights >= 0, one positive).
+    /// Shape families and their weights (same length, weights >= 0, one positive). Kind
+    /// custom stands for base.rocks[0]'s custom shape and needs one.
     std::vector<shapes::RockKind> kinds = {shapes::RockKind::sphere};
     std::vector<double> kind_weights = {1.0};
     /// Nominal size (volume-equivalent diameter), m; support inside the scenario's range of
