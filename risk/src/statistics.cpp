@@ -7,6 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rockfall::risk {
 namespace {
@@ -183,24 +184,58 @@ double median(std::vector<double> sample) {
     return quantile(sample, 0.5);
 }
 
-Interval median_confidence_interval(std::vector<double> sample, double confidence) {
+QuantileRanks quantile_confidence_ranks(std::int64_t n, double p, double confidence) {
     require_confidence(confidence);
-    const auto n = static_cast<std::int64_t>(sample.size());
+    require(n >= 0, "n = " + std::to_string(n) + ": must be >= 0");
+    require(p > 0.0 && p < 1.0, "p = " + std::to_string(p) + ": must be in (0, 1)");
     const double tail = 0.5 * (1.0 - confidence);
-    const auto rank_ok = [&](std::int64_t r) { return binomial_cdf(r - 1, n, 0.5) <= tail; };
-    require(n > 0 && rank_ok(1), "a sample of " + std::to_string(n) + " is too small for a " +
-                                     std::to_string(confidence) +
-                                     " confidence interval of the median (even " +
-                                     "[min, max] covers less)");
-    // rank_ok holds for r = 1 and fails above n / 2 + 1; find the largest rank where it holds.
-    std::int64_t good = 1;
-    std::int64_t bad = n / 2 + 1;
-    while (bad - good > 1) {
-        const std::int64_t mid = good + (bad - good) / 2;
-        (rank_ok(mid) ? good : bad) = mid;
+    const double dn = static_cast<double>(n);
+    const auto lower_ok = [&](std::int64_t r) { return binomial_cdf(r - 1, n, p) <= tail; };
+    // P(B >= s) = I_p(s, n - s + 1) (DLMF 8.17.5) taken directly, not as 1 - P(B <= s - 1):
+    // at p = 1/2 it is then bitwise the lower tail at rank n + 1 - s, so the median's interval
+    // stays exactly symmetric.
+    const auto upper_ok = [&](std::int64_t s) {
+        const double ds = static_cast<double>(s);
+        return regularized_incomplete_beta(p, ds, dn - ds + 1.0) <= tail;
+    };
+    QuantileRanks ranks{0, n + 1};
+    // lower_ok falls from true to false as r grows (it fails at r = n + 1, where the cdf is 1);
+    // upper_ok rises from false (s = 0) to true. Bisect each between a known good and bad rank.
+    if (n > 0 && lower_ok(1)) {
+        std::int64_t good = 1;
+        std::int64_t bad = n + 1;
+        while (bad - good > 1) {
+            const std::int64_t mid = good + (bad - good) / 2;
+            (lower_ok(mid) ? good : bad) = mid;
+        }
+        ranks.lower = good;
     }
+    if (n > 0 && upper_ok(n)) {
+        std::int64_t bad = 0;
+        std::int64_t good = n;
+        while (good - bad > 1) {
+            const std::int64_t mid = bad + (good - bad) / 2;
+            (upper_ok(mid) ? good : bad) = mid;
+        }
+        ranks.upper = good;
+    }
+    return ranks;
+}
+
+Interval quantile_confidence_interval(std::vector<double> sample, double p, double confidence) {
+    const auto n = static_cast<std::int64_t>(sample.size());
+    const QuantileRanks ranks = quantile_confidence_ranks(n, p, confidence);
+    require(ranks.lower >= 1 && ranks.upper <= n,
+            "a sample of " + std::to_string(n) + " is too small for a " +
+                std::to_string(confidence) + " confidence interval of the " + std::to_string(p) +
+                " quantile (even [min, max] covers less)");
     std::sort(sample.begin(), sample.end());
-    return {sample[static_cast<std::size_t>(good - 1)], sample[static_cast<std::size_t>(n - good)]};
+    return {sample[static_cast<std::size_t>(ranks.lower - 1)],
+            sample[static_cast<std::size_t>(ranks.upper - 1)]};
+}
+
+Interval median_confidence_interval(std::vector<double> sample, double confidence) {
+    return quantile_confidence_interval(std::move(sample), 0.5, confidence);
 }
 
 double mean(const std::vector<double>& sample) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <tuple>
 #include <vector>
@@ -133,6 +134,48 @@ TEST_CASE("median confidence interval uses the binomial order statistics", "[ris
     }
     CHECK_THROWS_AS(ranks(5), std::invalid_argument);
     CHECK_THROWS_AS(median_confidence_interval({}), std::invalid_argument);
+}
+
+TEST_CASE("quantile confidence ranks match exact binomial sums", "[risk][statistics]") {
+    // Ranks from exact rational binomial sums (Python fractions).
+    const std::vector<std::tuple<std::int64_t, double, double, std::int64_t, std::int64_t>>
+        expected = {{100, 0.9, 0.95, 84, 96},     {100, 0.1, 0.95, 5, 17},
+                    {1000, 0.95, 0.95, 936, 964}, {1000, 0.99, 0.95, 983, 997},
+                    {20, 0.25, 0.95, 2, 10},      {1000, 0.9, 0.99, 875, 925},
+                    {1000, 0.5, 0.95, 469, 532}};
+    for (const auto& [n, p, confidence, lower, upper] : expected) {
+        INFO("n = " << n << ", p = " << p << ", confidence = " << confidence);
+        const QuantileRanks r = quantile_confidence_ranks(n, p, confidence);
+        CHECK(r.lower == lower);
+        CHECK(r.upper == upper);
+    }
+    // 0.95^n > 0.025 up to n = 71: no order statistic bounds the 95th percentile from above.
+    CHECK(quantile_confidence_ranks(71, 0.95).upper == 72);
+    CHECK(quantile_confidence_ranks(72, 0.95).upper == 72);
+    CHECK(quantile_confidence_ranks(59, 0.95).lower == 52);
+    CHECK(quantile_confidence_ranks(0, 0.5).lower == 0);
+    CHECK_THROWS_AS(quantile_confidence_ranks(10, 0.0), std::invalid_argument);
+    CHECK_THROWS_AS(quantile_confidence_ranks(10, 1.0), std::invalid_argument);
+}
+
+TEST_CASE("quantile confidence interval is the bounding order statistics", "[risk][statistics]") {
+    std::vector<double> sample(100);
+    for (std::size_t i = 0; i < sample.size(); ++i) sample[i] = 0.5 * static_cast<double>(100 - i);
+    const Interval i90 = quantile_confidence_interval(sample, 0.9);
+    CHECK(i90.lower == 42.0);  // x(84) = 84 / 2
+    CHECK(i90.upper == 48.0);  // x(96)
+    CHECK_THROWS_AS(quantile_confidence_interval(std::vector<double>(71, 1.0), 0.95),
+                    std::invalid_argument);
+}
+
+TEST_CASE("quantile confidence ranks stay fast for a million values", "[risk][statistics]") {
+    // The query command bounds percentiles of a million outcomes with these ranks; the normal
+    // approximation n p +- z sqrt(n p (1 - p)) places them within a rank or two.
+    const std::int64_t n = 1000000;
+    const QuantileRanks r = quantile_confidence_ranks(n, 0.99);
+    const double half = 1.959964 * std::sqrt(n * 0.99 * 0.01);
+    CHECK(std::abs(static_cast<double>(r.lower) - (0.99 * n - half)) < 2.0);
+    CHECK(std::abs(static_cast<double>(r.upper) - (0.99 * n + half + 1.0)) < 2.0);
 }
 
 TEST_CASE("mean and standard deviation", "[risk][statistics]") {

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -29,7 +30,19 @@ inline constexpr int schema_version = 1;
 /// A database problem; what() names the file and says what is wrong and what to do.
 class DatabaseError : public std::runtime_error {
   public:
-    using std::runtime_error::runtime_error;
+    /// Whose problem it is: the file given (the program exits 2) or the operation (exits 1).
+    enum class Kind {
+        bad_file,  ///< missing, exists already, foreign, corrupt, newer schema, read-only
+        failure,   ///< disk full, I/O error, locked by another program, a broken invariant
+    };
+    /// An error with its message (file, problem, remedy) and kind.
+    explicit DatabaseError(const std::string& message, Kind kind = Kind::failure)
+        : std::runtime_error(message), kind_(kind) {}
+    /// The kind given at construction.
+    Kind kind() const { return kind_; }
+
+  private:
+    Kind kind_;
 };
 
 /// The run a database holds (one per file).
@@ -105,13 +118,20 @@ class ResultsDb {
     /// The stored sample with its outcome (trajectory included); empty when absent.
     std::optional<SampleRecord> sample(std::int64_t index) const;
 
+    /// Whether the database was opened (or created) for writing.
+    bool writable() const { return writable_; }
+
     /// The underlying connection, for queries.
     sqlite3* handle() const { return db_; }
 
   private:
-    ResultsDb(sqlite3* db, std::filesystem::path path);
+    struct Statements;
+    ResultsDb(sqlite3* db, std::filesystem::path path, bool writable);
     sqlite3* db_ = nullptr;
     std::filesystem::path path_;
+    bool writable_ = false;
+    // The insert statements, prepared on the first write_batch and reused by later ones.
+    std::unique_ptr<Statements> statements_;
 };
 
 }  // namespace rockfall::db

@@ -49,12 +49,32 @@ double quantile(const std::vector<double>& sorted, double p);
 /// Median of a sample in any order (type 7 quantile at 0.5); the sample must not be empty.
 double median(std::vector<double> sample);
 
-/// Distribution-free confidence interval for the median from binomial order statistics
-/// (Conover, Practical Nonparametric Statistics, 3rd ed., 1999, sec. 3.2): [x(r), x(n+1-r)]
-/// with r the largest rank such that P(B <= r - 1) <= (1 - confidence) / 2 for
-/// B ~ Binomial(n, 1/2); coverage >= confidence for any continuous distribution. The sample
-/// may be in any order. Throws std::invalid_argument when the sample is too small for the
-/// confidence (n < 6 at 95 %).
+/// 1-based ranks of the order statistics x(lower) <= x(upper) that bound quantile p.
+struct QuantileRanks {
+    /// Rank of the lower bound, in [1, n]; 0 when no order statistic bounds the quantile from
+    /// below at the confidence (the sample is too small for that tail).
+    std::int64_t lower = 0;
+    /// Rank of the upper bound, in [1, n]; n + 1 when none bounds it from above.
+    std::int64_t upper = 0;
+};
+
+/// Ranks of the distribution-free confidence interval [x(r), x(s)] for the quantile p in
+/// (0, 1) of a sample of n values (Conover, Practical Nonparametric Statistics, 3rd ed., 1999,
+/// sec. 3.2): with B ~ Binomial(n, p) the number of values below the quantile, r is the
+/// largest rank with P(B <= r - 1) <= (1 - confidence) / 2 and s the smallest with
+/// P(B >= s) <= (1 - confidence) / 2; coverage >= confidence for any continuous distribution.
+/// n >= 0; throws std::invalid_argument for p or confidence outside (0, 1).
+QuantileRanks quantile_confidence_ranks(std::int64_t n, double p, double confidence = 0.95);
+
+/// The interval of quantile_confidence_ranks as values of a sample in any order. Throws
+/// std::invalid_argument when the sample is too small for either bound (at 95 %: n < 6 for
+/// the median, n < 72 for the 95th percentile).
+Interval quantile_confidence_interval(std::vector<double> sample, double p,
+                                      double confidence = 0.95);
+
+/// Distribution-free confidence interval for the median: quantile_confidence_interval at
+/// p = 1/2, where the bounds are symmetric, [x(r), x(n+1-r)]. Throws std::invalid_argument
+/// when the sample is too small for the confidence (n < 6 at 95 %).
 Interval median_confidence_interval(std::vector<double> sample, double confidence = 0.95);
 
 /// Arithmetic mean of a sample (not empty).

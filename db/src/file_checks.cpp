@@ -1,0 +1,169 @@
+#include "file_checks.hpp"
+
+#include <array>
+#include <cctype>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <system_error>
+#include <unistd.h>
+
+namespace rockfall::db {
+namespace {
+
+namespace fs = std::filesystem;
+using Kind = DatabaseError::Kind;
+
+[[noreturn]] void refuse(const fs::path& path, const std::string& problem) {
+    throw DatabaseError(path.string() + problem, Kind::bad_file);
+}
+
+fs::path directory_of(const fs::path& path) {
+    const fs::path parent = path.parent_path();
+    return parent.empty() ? fs::path(".") : parent;
+}
+
+// access() lets root write anything, so a file or directory protected with `chmod a-w` is
+// also treated as read-only when no write bit is set: a results file kept read-only stays
+// unchanged whoever runs the program.
+bool writable_location(const fs::path& path) {
+    std::error_code error;
+    const fs::perms perms = fs::status(path, error).permissions();
+    if (error) return false;
+    constexpr fs::perms any_write =
+        fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
+    return (perms & any_write) != fs::perms::none && ::access(path.c_str(), W_OK) == 0;
+}
+
+std::string percent_encoded(const std::string& text) {
+    // RFC 3986 unreserved characters and '/' pass; SQLite decodes %HH in URI paths.
+    std::string out;
+    for (const unsigned char c : text) {
+        if (std::isalnum(c) != 0 || std::strchr("-._~/", c) != nullptr) {
+            out += static_cast<char>(c);
+        } else {
+            std::array<char, 4> hex{};
+            std::snprintf(hex.data(), hex.size(), "%%%02X", c);
+            out += hex.data();
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+void require_creatable(const fs::path& path) {
+    std::error_code error;
+    if (fs::exists(fs::symlink_status(path, error))) {
+        refuse(path,
+               " exists already; a sweep never overwrites results: choose another file "
+               "name, or delete the file first");
+    }
+    const fs::path directory = directory_of(path);
+    if (!fs::is_directory(directory, error)) {
+        refuse(path, ": cannot create it, its directory " + directory.string() + " does not exist");
+    }
+    if (!writable_location(directory)) {
+        refuse(path, ": cannot create it, its directory " + directory.string() +
+                         " is read-only; choose a writable directory");
+    }
+}
+
+void require_database_file(const fs::path& path, bool writable) {
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    if (!fs::exists(status)) {
+        refuse(path, ": no such file; give a results database written by `rockfall sweep`");
+    }
+    if (!fs::is_regular_file(status)) {
+        refuse(path, " is not a file; give a results database written by `rockfall sweep`");
+    }
+    // SQLite treats an empty or unreadable file in its own terms ("file is not a database",
+    // or an empty database it would happily write to); the header says it plainly first.
+    std::ifstream in(path, std::ios::binary);
+    if (!in) refuse(path, ": cannot read it; check its permissions");
+    std::array<char, 16> header{};
+    in.read(header.data(), header.size());
+    if (in.gcount() == 0) {
+        refuse(path,
+               " is empty, not a rockfall results database; give a file written by "
+               "`rockfall sweep`");
+    }
+    if (in.gcount() < 16 || std::memcmp(header.data(), "SQLite format 3", 16) != 0) {
+        refuse(path,
+               " is not an SQLite database, so not a rockfall results database; give a "
+               "file written by `rockfall sweep`");
+    }
+    if (!writable) return;
+    if (!writable_location(path)) {
+        refuse(path, " is read-only; make it writable (chmod u+w) or work on a copy");
+    }
+    const fs::path directory = directory_of(path);
+    if (!writable_location(directory)) {
+        refuse(path, ": its directory " + directory.string() +
+                         " is read-only, and SQLite needs to create its journal files there; "
+                         "move the file to a writable directory");
+    }
+}
+
+void require_writable(const ResultsDb& db, const std::string& what) {
+    if (!db.writable()) {
+        throw DatabaseError(db.path().string() + " was opened read-only: cannot " + what,
+                            Kind::failure);
+    }
+}
+
+bool read_only_location(const fs::path& path) {
+    if (writable_location(directory_of(path))) return false;
+    std::error_code error;
+    const fs::path wal = path.string() + "-wal";
+    const auto wal_size = fs::file_size(wal, error);
+    if (!error && wal_size > 0) {
+        refuse(path, ": its latest samples are still in " + wal.string() +
+                         " and the directory is read-only, so SQLite cannot read them; copy "
+                         "both files to a writable directory");
+    }
+    return true;
+}
+
+std::string immutable_uri(const fs::path& path) {
+    return "file:" + percent_encoded(fs::absolute(path).string()) + "?immutable=1";
+}
+
+TemporaryFile::TemporaryFile(const fs::path& target) {
+    std::random_device device;
+    const auto tag = (static_cast<unsigned long long>(device()) << 32U) ^ device() ^
+                     static_cast<unsigned long long>(::getpid());
+    std::array<char, 17> hex{};
+    std::snprintf(hex.data(), hex.size(), "%016llx", tag);
+    path_ = directory_of(target) / ("." + target.filename().string() + "." + hex.data() + ".part");
+}
+
+TemporaryFile::~TemporaryFile() {
+    std::error_code ignored;
+    fs::remove(path_, ignored);
+    fs::remove(path_.string() + "-journal", ignored);
+}
+
+void publish(const TemporaryFile& temporary, const fs::path& target) {
+    // A hard link fails when the target exists, so a file that appeared since
+    // require_creatable is never replaced; rename() would replace it silently.
+    std::error_code error;
+    fs::create_hard_link(temporary.path(), target, error);
+    if (!error) return;
+    if (error == std::errc::file_exists) {
+        refuse(target, " appeared while the database was being created; nothing was written");
+    }
+    // File systems without hard links (FAT, some network shares): check, then rename.
+    if (fs::exists(fs::symlink_status(target, error))) {
+        refuse(target, " appeared while the database was being created; nothing was written");
+    }
+    fs::rename(temporary.path(), target, error);
+    if (error) {
+        throw DatabaseError("cannot create " + target.string() + ": " + error.message(),
+                            Kind::failure);
+    }
+}
+
+}  // namespace rockfall::db

@@ -1,0 +1,299 @@
+#include "db/results_db.hpp"
+
+#include "file_checks.hpp"
+#include "sample_io.hpp"
+#include "schema.hpp"
+#include "sqlite.hpp"
+
+#include <cassert>
+#include <string>
+#include <system_error>
+#include <utility>
+
+namespace rockfall::db {
+namespace {
+
+namespace fs = std::filesystem;
+using Kind = DatabaseError::Kind;
+
+// A concurrent reader or writer holds its lock for one batch at most; wait that long.
+constexpr int busy_timeout_ms = 10000;
+
+// A connection closed on scope exit unless released into a ResultsDb.
+struct Connection {
+    sqlite3* db = nullptr;
+    Connection() = default;
+    Connection(const Connection&) = delete;
+    Connection& operator=(const Connection&) = delete;
+    ~Connection() { sqlite3_close_v2(db); }
+    sqlite3* release() { return std::exchange(db, nullptr); }
+};
+
+void open_connection(Connection& connection, const fs::path& path, const std::string& name,
+                     int flags) {
+    const int code = sqlite3_open_v2(name.c_str(), &connection.db, flags, nullptr);
+    if (code != SQLITE_OK) sql::fail(connection.db, code, path, "opening the database");
+    sqlite3_busy_timeout(connection.db, busy_timeout_ms);
+    sqlite3_extended_result_codes(connection.db, 1);
+}
+
+std::int64_t pragma_integer(sqlite3* db, const fs::path& path, const std::string& pragma) {
+    sql::Statement statement(db, path, "PRAGMA " + pragma);
+    if (!statement.step()) sql::fail(db, SQLITE_CORRUPT, path, "reading PRAGMA " + pragma);
+    return statement.integer(0);
+}
+
+std::string pragma_text(sqlite3* db, const fs::path& path, const std::string& pragma) {
+    sql::Statement statement(db, path, "PRAGMA " + pragma);
+    return statement.step() ? statement.text(0) : std::string();
+}
+
+// Is this file ours, of a version this build reads, with every table and view?
+void check_identity(sqlite3* db, const fs::path& path) {
+    const std::int64_t id = pragma_integer(db, path, "application_id");
+    if (id != application_id) {
+        throw DatabaseError(path.string() +
+                                " is an SQLite database but not a rockfall results database "
+                                "(its application_id is " +
+                                std::to_string(id) + ", not " + std::to_string(application_id) +
+                                "): give a file written by `rockfall sweep`",
+                            Kind::bad_file);
+    }
+    const std::int64_t version = pragma_integer(db, path, "user_version");
+    if (version > schema_version) {
+        throw DatabaseError(path.string() + " has schema version " + std::to_string(version) +
+                                ", written by a newer rockfall; this build reads version " +
+                                std::to_string(schema_version) + ": upgrade rockfall",
+                            Kind::bad_file);
+    }
+    if (version < 1) {
+        throw DatabaseError(path.string() + " has schema version " + std::to_string(version) +
+                                ", which no rockfall writes: the file is damaged",
+                            Kind::bad_file);
+    }
+    sql::Statement exists(db, path, "SELECT 1 FROM sqlite_schema WHERE name = ?");
+    for (const std::string_view name : schema::objects) {
+        exists.reset();
+        exists.bind_text(1, name);
+        if (!exists.step()) {
+            throw DatabaseError(path.string() + " lacks its table or view '" + std::string(name) +
+                                    "': the file is damaged; restore it from a copy",
+                                Kind::bad_file);
+        }
+    }
+}
+
+void set_writer_pragmas(sqlite3* db, const fs::path& path) {
+    // WAL: readers (rockfall query) run while the sweep writes, and a crash or kill leaves the
+    // last committed batch intact. synchronous=NORMAL in WAL mode keeps the file consistent
+    // after a power loss at the price of the last batches, and syncs once per checkpoint
+    // rather than per transaction (SQLite, "Write-Ahead Logging", sec. 2.3).
+    const std::string mode = pragma_text(db, path, "journal_mode = WAL");
+    if (mode != "wal") {
+        throw DatabaseError(path.string() +
+                                ": the file system does not support SQLite's WAL "
+                                "journal (journal_mode is '" +
+                                mode + "'); use a local disk",
+                            Kind::bad_file);
+    }
+    sql::exec(db, path, "PRAGMA synchronous = NORMAL; PRAGMA foreign_keys = ON",
+              "setting up the connection");
+}
+
+void check_integrity(sqlite3* db, const fs::path& path) {
+    const std::string result = pragma_text(db, path, "quick_check(1)");
+    if (result != "ok") {
+        throw DatabaseError(path.string() + " is corrupt (SQLite quick_check: " + result +
+                                "): restore it from a copy or run the sweep again",
+                            Kind::bad_file);
+    }
+}
+
+void insert_run(sqlite3* db, const fs::path& path, const RunRecord& run) {
+    sql::Statement insert(db, path,
+                          "INSERT INTO run (id, kind, tool_version, build, scenario_name, "
+                          "scenario_text, scenario_hash, seed, method, samples_planned, "
+                          "stop_rule, settings_json, started_at, finished_at, status) "
+                          "VALUES (1, 'rock_sweep', ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    sql::Binder binder(insert);
+    binder.text(run.tool_version)
+        .text(run.build)
+        .text(run.scenario_name)
+        .text(run.scenario_text)
+        .text(run.scenario_hash)
+        .integer(sql::to_stored(run.seed))
+        .text(run.method)
+        .integer(run.samples_planned)
+        .text(run.stop_rule)
+        .text(run.settings_json)
+        .text(run.started_at);
+    if (run.finished_at.empty()) {
+        binder.null();
+    } else {
+        binder.text(run.finished_at);
+    }
+    binder.text(run.status).run();
+
+    sql::Statement zone(db, path, "INSERT INTO zones (zone, name) VALUES (?, ?)");
+    for (std::size_t i = 0; i < run.zones.size(); ++i) {
+        sql::Binder(zone).integer(static_cast<std::int64_t>(i)).text(run.zones[i]).run();
+    }
+}
+
+// Writes the new database into `temporary` (rollback journal, so closing leaves one file).
+void build_database(const fs::path& temporary, const fs::path& path, const RunRecord& run) {
+    Connection connection;
+    open_connection(connection, path, temporary.string(),
+                    SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+    sqlite3* db = connection.db;
+    sql::Transaction transaction(db, path);
+    sql::exec(db, path,
+              "PRAGMA application_id = " + std::to_string(application_id) +
+                  "; PRAGMA user_version = " + std::to_string(schema_version),
+              "creating the database");
+    sql::exec(db, path, std::string(schema::definition), "creating the tables");
+    insert_run(db, path, run);
+    transaction.commit();
+    const int code = sqlite3_close(connection.release());
+    if (code != SQLITE_OK) sql::fail(nullptr, code, path, "closing the new database");
+}
+
+}  // namespace
+
+ResultsDb::ResultsDb(sqlite3* db, fs::path path, bool writable)
+    : db_(db), path_(std::move(path)), writable_(writable) {}
+
+ResultsDb::ResultsDb(ResultsDb&& other) noexcept
+    : db_(std::exchange(other.db_, nullptr)),
+      path_(std::move(other.path_)),
+      writable_(other.writable_),
+      statements_(std::move(other.statements_)) {}
+
+ResultsDb& ResultsDb::operator=(ResultsDb&& other) noexcept {
+    if (this != &other) {
+        statements_.reset();
+        sqlite3_close_v2(db_);
+        db_ = std::exchange(other.db_, nullptr);
+        path_ = std::move(other.path_);
+        writable_ = other.writable_;
+        statements_ = std::move(other.statements_);
+    }
+    return *this;
+}
+
+ResultsDb::~ResultsDb() {
+    // Statements first: a connection with unfinalized statements cannot close.
+    statements_.reset();
+    sqlite3_close_v2(db_);
+}
+
+ResultsDb ResultsDb::create(const fs::path& path, const RunRecord& run) {
+    require_creatable(path);
+    TemporaryFile temporary(path);
+    build_database(temporary.path(), path, run);
+    publish(temporary, path);
+    try {
+        return open(path, true);
+    } catch (...) {
+        // The file is ours and was never handed out: leave nothing behind.
+        std::error_code ignored;
+        fs::remove(path, ignored);
+        throw;
+    }
+}
+
+ResultsDb ResultsDb::open(const fs::path& path, bool writable) {
+    require_database_file(path, writable);
+    Connection connection;
+    if (writable) {
+        open_connection(connection, path, path.string(), SQLITE_OPEN_READWRITE);
+    } else {
+        const bool immutable = read_only_location(path);
+        open_connection(connection, path, immutable ? immutable_uri(path) : path.string(),
+                        SQLITE_OPEN_READONLY | (immutable ? SQLITE_OPEN_URI : 0));
+    }
+    check_identity(connection.db, path);
+    if (writable) {
+        set_writer_pragmas(connection.db, path);
+        // A sweep appends to this file for hours: check it once now rather than fail later.
+        check_integrity(connection.db, path);
+    }
+    return ResultsDb(connection.release(), path, writable);
+}
+
+RunRecord ResultsDb::run() const {
+    sql::Statement select(db_, path_,
+                          "SELECT tool_version, build, scenario_name, scenario_text, "
+                          "scenario_hash, seed, method, samples_planned, stop_rule, "
+                          "settings_json, started_at, finished_at, status FROM run WHERE id = 1");
+    if (!select.step()) {
+        throw DatabaseError(path_.string() + " holds no run record: the file is damaged",
+                            Kind::bad_file);
+    }
+    RunRecord run;
+    run.tool_version = select.text(0);
+    run.build = select.text(1);
+    run.scenario_name = select.text(2);
+    run.scenario_text = select.text(3);
+    run.scenario_hash = select.text(4);
+    run.seed = sql::from_stored(select.integer(5));
+    run.method = select.text(6);
+    run.samples_planned = select.integer(7);
+    run.stop_rule = select.text(8);
+    run.settings_json = select.text(9);
+    run.started_at = select.text(10);
+    run.finished_at = select.text(11);
+    run.status = select.text(12);
+    sql::Statement zones(db_, path_, "SELECT name FROM zones ORDER BY zone");
+    while (zones.step()) run.zones.push_back(zones.text(0));
+    return run;
+}
+
+void ResultsDb::write_batch(const std::vector<SampleRecord>& samples) {
+    require_writable(*this, "write samples");
+    if (!statements_) statements_ = std::make_unique<Statements>(db_, path_);
+    sql::Transaction transaction(db_, path_);
+    for (const SampleRecord& record : samples) statements_->write(record);
+    transaction.commit();
+}
+
+std::vector<std::int64_t> ResultsDb::stored_samples() const {
+    // A sample is stored once its outcome is: both are written in the same transaction.
+    sql::Statement select(db_, path_, "SELECT sample FROM outcomes ORDER BY sample");
+    std::vector<std::int64_t> indices;
+    while (select.step()) indices.push_back(select.integer(0));
+    return indices;
+}
+
+void ResultsDb::delete_samples_from(std::int64_t first) {
+    require_writable(*this, "delete samples");
+    sql::Transaction transaction(db_, path_);
+    // Children first: the foreign keys point at samples.
+    for (const char* table : {"trajectories", "wall_impacts", "stations", "outcomes", "samples"}) {
+        sql::Statement erase(db_, path_,
+                             std::string("DELETE FROM ") + table + " WHERE sample >= ?");
+        erase.bind_int(1, first);
+        erase.step();
+    }
+    transaction.commit();
+}
+
+void ResultsDb::finish(const std::string& status, const std::string& finished_at) {
+    require_writable(*this, "record the end of the run");
+    sql::Statement update(db_, path_, "UPDATE run SET status = ?, finished_at = ? WHERE id = 1");
+    sql::Binder(update).text(status).text(finished_at).run();
+    // Back to a rollback journal, which checkpoints the WAL into the file and removes the -wal
+    // and -shm files: a finished database is one self-contained file that can be copied or
+    // read from a read-only place. open(writable) returns it to WAL. While a reader has the
+    // file open SQLite refuses the switch; the file then stays in WAL mode, equally valid, so
+    // the result is deliberately not checked, and the switch does not wait for the reader.
+    sqlite3_busy_timeout(db_, 0);
+    sqlite3_exec(db_, "PRAGMA journal_mode = DELETE", nullptr, nullptr, nullptr);
+    sqlite3_busy_timeout(db_, busy_timeout_ms);
+}
+
+std::optional<SampleRecord> ResultsDb::sample(std::int64_t index) const {
+    return read_sample(db_, path_, index);
+}
+
+}  // namespace rockfall::db
