@@ -2,6 +2,7 @@
 
 #include "scenario_reader.hpp"
 #include "scenario_schema.hpp"
+#include "sweep_reader.hpp"
 
 #include <climits>
 #include <toml++/toml.h>
@@ -56,12 +57,14 @@ const std::vector<ScenarioProblem>& sort_in_file_order(std::vector<ScenarioProbl
 }
 
 // Overrides `base` with `over`: tables merge recursively, any other value replaces the base's.
+// Inline tables are values: TOML defines them as complete, and merging two distributions
+// ({ uniform = ... } over { normal = ... }) would make one naming both.
 // Nodes are moved, which keeps their source file and line for messages.
 void merge(toml::table& base, toml::table&& over) {
     for (auto&& [key, node] : over) {
         auto* over_table = node.as_table();
         auto* base_table = base.get_as<toml::table>(key.str());
-        if (over_table != nullptr && base_table != nullptr) {
+        if (over_table != nullptr && base_table != nullptr && !over_table->is_inline()) {
             merge(*base_table, std::move(*over_table));
         } else {
             base.insert_or_assign(key, std::move(node));
@@ -148,6 +151,8 @@ namespace {
 
 struct Parsed {
     engine::Scenario scenario;
+    risk::SweepSpec sweep;
+    bool has_sweep = false;
     bool extended = false;
 };
 
@@ -164,8 +169,40 @@ Parsed parse(std::string_view text, const std::string& source, const fs::path& b
     parsed.scenario = detail::read_scenario(root, source, sources, problems);
     std::vector<ScenarioProblem> invalid = detail::find_problems(parsed.scenario, &sources);
     problems.insert(problems.end(), invalid.begin(), invalid.end());
+
+    // The sweep's defaults and checks need a valid base; its keys are read in any case, so that
+    // their problems come with the base's.
+    const bool base_valid = problems.empty();
+    if (base_valid) parsed.sweep = risk::sweep_defaults(parsed.scenario);
+    if (const toml::node* sweep = root.get("sweep")) {
+        parsed.has_sweep = true;
+        detail::Context context{source, sources, problems};
+        detail::read_sweep(*sweep, parsed.sweep, context);
+        if (base_valid) {
+            std::vector<ScenarioProblem> sweep_problems =
+                detail::find_sweep_problems(parsed.sweep, parsed.scenario, &sources);
+            problems.insert(problems.end(), sweep_problems.begin(), sweep_problems.end());
+        }
+    }
     if (!problems.empty()) throw ScenarioError(std::move(problems));
     return parsed;
+}
+
+ScenarioFile file_from(std::string text, const std::string& source, const fs::path& base_dir,
+                       std::vector<fs::path> chain) {
+    ScenarioFile loaded;
+    loaded.path = source;
+    loaded.text = std::move(text);
+    const Parsed parsed = parse(loaded.text, source, base_dir, std::move(chain));
+    loaded.scenario = parsed.scenario;
+    loaded.sweep = parsed.sweep;
+    loaded.has_sweep = parsed.has_sweep;
+    if (parsed.extended) {
+        loaded.text = "# " + source + " with its extends resolved: every key written out.\n" +
+                      format_scenario(loaded.scenario);
+        if (parsed.has_sweep) loaded.text += "\n" + detail::format_sweep(parsed.sweep);
+    }
+    return loaded;
 }
 
 }  // namespace
@@ -175,18 +212,15 @@ ScenarioError::ScenarioError(std::vector<ScenarioProblem> problems)
       problems_(std::move(problems)) {}
 
 ScenarioFile load_scenario(const fs::path& file) {
-    ScenarioFile loaded;
+    ScenarioFile loaded = file_from(detail::read_text(file, "", 0), file.string(),
+                                    file.parent_path(), {fs::weakly_canonical(file)});
     loaded.path = file;
-    loaded.text = detail::read_text(file, "", 0);
-    const Parsed parsed =
-        parse(loaded.text, file.string(), file.parent_path(), {fs::weakly_canonical(file)});
-    loaded.scenario = parsed.scenario;
-    if (parsed.extended) {
-        loaded.text = "# " + file.string() +
-                      " with its extends resolved: every key written out.\n" +
-                      format_scenario(loaded.scenario);
-    }
     return loaded;
+}
+
+ScenarioFile parse_scenario_file(std::string_view text, const std::string& source,
+                                 const fs::path& base_dir) {
+    return file_from(std::string(text), source, base_dir, {});
 }
 
 engine::Scenario parse_scenario(std::string_view text, const std::string& source,

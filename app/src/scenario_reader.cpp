@@ -232,6 +232,8 @@ engine::Scenario read_scenario(const toml::table& root, const std::string& file,
     TableReader r(root, "", context);
     // Resolved before reading (scenario_file.cpp); asked for so that it counts as known.
     r.get("extends");
+    // Read after the scenario, which gives its defaults (sweep_reader.cpp).
+    r.get("sweep");
     read(r, "name", scenario.name);
     read_fields(r, scenario, scenario_fields);
     with_table(r, "slope", [&](TableReader& s) { read_slope(s, scenario.slope); });

@@ -4,15 +4,18 @@
 /// Layout (README, "Scenario files", lists every key with unit, default and range): top-level
 /// `name`, `extends`, `gravity`, `stations`; tables `[slope]` (with `[[slope.segments]]`,
 /// `[slope.side_walls]`, `[slope.bars]`, `[slope.wall]`), `[materials.slope|bars|side_walls|
-/// wall]`, `[wall_contact]`, `[[rocks]]` (with `[rocks.material]`, `[rocks.release]`) and
-/// `[numerics]`. Keys are the field names of engine::Scenario and shapes::SlopeSpec; a missing
-/// key keeps the struct's default. Indices in key paths and `slope.bars.segments` are 0-based.
+/// wall]`, `[wall_contact]`, `[[rocks]]` (with `[rocks.material]`, `[rocks.release]`),
+/// `[numerics]`, and `[sweep]` (what a sweep varies, risk::SweepSpec). Keys are the field names of
+/// engine::Scenario and shapes::SlopeSpec; a missing key keeps the struct's default. Indices in key
+/// paths and `slope.bars.segments` are 0-based.
 ///
 /// `extends = "base.toml"` (relative to the file) loads the base first and overrides it key by
-/// key: tables merge recursively, every other value (arrays and arrays of tables included)
-/// replaces the base's. Bases may extend further bases; cycles are errors.
+/// key: tables merge recursively, every other value (arrays, arrays of tables and inline tables
+/// `{ ... }`, which TOML defines as complete in themselves, included) replaces the base's. Bases
+/// may extend further bases; cycles are errors.
 
 #include "engine/scenario.hpp"
+#include "risk/sampling.hpp"
 
 #include <filesystem>
 #include <stdexcept>
@@ -62,11 +65,21 @@ struct ScenarioFile {
     std::string text;
     /// Path it was read from.
     std::filesystem::path path;
+    /// What a sweep of this scenario varies: the file's [sweep] table, its omitted keys fixed
+    /// at the first rock's values (risk::sweep_defaults); without [sweep], sweep_defaults.
+    risk::SweepSpec sweep;
+    /// Whether the file has a [sweep] table.
+    bool has_sweep = false;
 };
 
 /// Reads, parses and validates a scenario file; throws ScenarioError listing all problems
 /// (a missing or unreadable file and TOML syntax errors are single problems).
 ScenarioFile load_scenario(const std::filesystem::path& file);
+
+/// Parses and validates scenario text as load_scenario reads a file (path = source; the text
+/// as given, or resolved when it has `extends`); throws ScenarioError.
+ScenarioFile parse_scenario_file(std::string_view text, const std::string& source,
+                                 const std::filesystem::path& base_dir = ".");
 
 /// Parses and validates scenario text; `source` names it in messages; `base_dir` resolves
 /// `extends` paths. Throws ScenarioError.
@@ -76,6 +89,12 @@ engine::Scenario parse_scenario(std::string_view text, const std::string& source
 /// Applies the file's range and cross-field rules to a scenario built in code; throws
 /// ScenarioError (problems have key paths but no file).
 void validate_scenario(const engine::Scenario& scenario);
+
+/// Applies the [sweep] rules to a spec built in code, against a base scenario that must be
+/// valid too: the spec's own rules (risk::find_problems) and the base scenario's ranges and
+/// cross-field rules applied to each end of every support (size, density, material, release
+/// distance); throws ScenarioError with key paths such as "sweep.rock.size".
+void validate_sweep(const risk::SweepSpec& spec, const engine::Scenario& base);
 
 /// The scenario as a complete TOML document, every key written out; parse_scenario reads it
 /// back to an identical scenario (numbers are written in their shortest exact form).
