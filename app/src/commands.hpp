@@ -24,4 +24,8 @@ void register_formula(CLI::App& app);
 /// sphericities) and optionally its simulated hull as an OBJ file.
 void register_shape(CLI::App& app);
 
+/// `rockfall query DB WHAT`: summary, percentiles, exceedance probabilities and the worst
+/// samples of a results database, as text, CSV or JSON.
+void register_query(CLI::App& app);
+
 }  // namespace rockfall::app

@@ -3,6 +3,7 @@
 #include "commands.hpp"
 
 #include "app/scenario_file.hpp"
+#include "db/results_db.hpp"
 #include "shapes/polyhedron.hpp"
 
 #include <CLI/CLI.hpp>
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
     rockfall::app::register_soil(app);
     rockfall::app::register_formula(app);
     rockfall::app::register_shape(app);
+    rockfall::app::register_query(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -36,6 +38,12 @@ int main(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
         std::cerr << "rockfall: " << e.what() << '\n';
         return rockfall::app::exit_bad_input;
+    } catch (const rockfall::db::DatabaseError& e) {
+        // A missing, foreign, corrupt, newer or read-only file is bad input; a full disk is not.
+        std::cerr << "rockfall: " << e.what() << '\n';
+        return e.kind() == rockfall::db::DatabaseError::Kind::bad_file
+                   ? rockfall::app::exit_bad_input
+                   : rockfall::app::exit_failure;
     } catch (const std::exception& e) {
         std::cerr << "rockfall: " << e.what() << '\n';
         return rockfall::app::exit_failure;

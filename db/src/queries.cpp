@@ -2,11 +2,11 @@
 
 #include "db/queries.hpp"
 
+#include "number_text.hpp"
 #include "sqlite.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -44,12 +44,6 @@ constexpr std::pair<GroupBy, std::string_view> group_names[] = {{GroupBy::none, 
                                                                 {GroupBy::kind, "kind"},
                                                                 {GroupBy::size, "size"},
                                                                 {GroupBy::zone, "zone"}};
-
-std::string format_number(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", value);
-    return buffer;
-}
 
 double round_to_significant(double value, int digits) {
     const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(std::abs(value))));
@@ -156,8 +150,8 @@ class Classifier {
                 id.size_min = k == 0 ? 0.0 : edges_[k - 1];
                 id.size_max =
                     k < edges_.size() ? edges_[k] : std::numeric_limits<double>::infinity();
-                id.label = "[" + format_number(id.size_min) + ", " +
-                           (k < edges_.size() ? format_number(id.size_max) : "inf") + ")";
+                id.label = "[" + number_text(id.size_min) + ", " +
+                           (k < edges_.size() ? number_text(id.size_max) : "inf") + ")";
                 break;
             }
         }
@@ -237,13 +231,13 @@ GroupBy parse_group_by(std::string_view name) {
 
 void validate_size_edges(const std::vector<double>& edges) {
     for (std::size_t i = 0; i < edges.size(); ++i) {
-        const std::string where = "size class edge " + format_number(edges[i]) + " m";
+        const std::string where = "size class edge " + number_text(edges[i]) + " m";
         if (!std::isfinite(edges[i]) || edges[i] <= 0.0) {
             throw std::invalid_argument(where + ": must be finite and > 0");
         }
         if (i > 0 && edges[i] <= edges[i - 1]) {
             throw std::invalid_argument(where + ": edges must be strictly ascending (follows " +
-                                        format_number(edges[i - 1]) + " m)");
+                                        number_text(edges[i - 1]) + " m)");
         }
     }
 }

@@ -1,5 +1,6 @@
 // Statistics on the values read by queries.cpp: percentiles, exceedance, the run summary.
 
+#include "number_text.hpp"
 #include "sqlite.hpp"
 
 #include "db/queries.hpp"
@@ -14,7 +15,7 @@ namespace {
 
 void require_confidence(double confidence) {
     if (!(confidence > 0.0 && confidence < 1.0)) {
-        throw std::invalid_argument("confidence = " + std::to_string(confidence) +
+        throw std::invalid_argument("confidence = " + number_text(confidence) +
                                     ": must be in (0, 1), e.g. 0.95");
     }
 }
@@ -42,7 +43,7 @@ PercentileTable percentiles(const ResultsDb& db, Quantity quantity, const std::v
     require_confidence(confidence);
     for (const double p : ps) {
         if (!(p > 0.0 && p < 1.0)) {
-            throw std::invalid_argument("percentile " + std::to_string(100.0 * p) +
+            throw std::invalid_argument("percentile " + number_text(100.0 * p) +
                                         ": must be in (0, 100)");
         }
     }
@@ -83,7 +84,7 @@ ExceedanceTable exceedance(const ResultsDb& db, Quantity quantity, double thresh
                            const Grouping& grouping, IntervalMethod method, double confidence) {
     require_confidence(confidence);
     if (!std::isfinite(threshold)) {
-        throw std::invalid_argument("threshold = " + std::to_string(threshold) + " " +
+        throw std::invalid_argument("threshold = " + number_text(threshold) + " " +
                                     std::string(unit_of(quantity)) + ": must be finite");
     }
     ExceedanceTable table{quantity, threshold, method, confidence, {}};

@@ -126,7 +126,7 @@ SampleRecord synthetic_record(const SyntheticOptions& options, std::int64_t inde
             w.energy_before = 0.55 * in.mass * speed * speed;
             w.energy_after = w.energy_before * in.material.restitution * in.material.restitution;
             // Hertz-like growth with mass and speed (F ~ m^(3/5) v^(6/5)) and a 30 % scatter.
-            w.peak_normal_force = 2.0e4 * std::pow(in.mass, 0.6) * std::pow(speed, 1.2) *
+            w.peak_normal_force = 2.5e3 * std::pow(in.mass, 0.6) * std::pow(speed, 1.2) *
                                   std::exp(0.3 * normal(random));
             w.peak_time = w.start_time + 0.002;
             speed *= 0.3;

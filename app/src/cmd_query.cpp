@@ -1,0 +1,174 @@
+// `rockfall query DB <what>`: questions on a results database written by `rockfall sweep`.
+
+#include "commands.hpp"
+#include "query_report.hpp"
+
+#include "db/queries.hpp"
+#include "db/results_db.hpp"
+
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rockfall::app {
+namespace {
+
+struct QueryArgs {
+    std::string database;
+    bool json = false;
+    bool csv = false;
+    double confidence = 0.95;
+    // percentiles, exceed: the breakdown.
+    std::string group = "none";
+    std::vector<double> size_classes;
+    // percentiles.
+    std::string of = "reach";
+    std::vector<double> levels = {50.0, 90.0, 95.0, 99.0};
+    // exceed.
+    std::optional<double> distance;
+    std::optional<double> value;
+    std::string interval = "wilson";
+    // worst.
+    std::int64_t count = 10;
+    std::string worst_by = "reach";
+};
+
+QueryFormat format_of(const QueryArgs& args) {
+    if (args.json) return QueryFormat::json;
+    return args.csv ? QueryFormat::csv : QueryFormat::text;
+}
+
+db::Grouping grouping_of(const QueryArgs& args) {
+    db::Grouping grouping{db::parse_group_by(args.group), args.size_classes};
+    if (!args.size_classes.empty() && grouping.by != db::GroupBy::size) {
+        throw std::invalid_argument("--size-classes applies to --by size only");
+    }
+    db::validate_size_edges(grouping.size_edges);
+    return grouping;
+}
+
+db::ResultsDb open_database(const QueryArgs& args) {
+    return db::ResultsDb::open(args.database, false);
+}
+
+void run_summary(const QueryArgs& args) {
+    const db::ResultsDb database = open_database(args);
+    write_summary(std::cout, format_of(args), args.database,
+                  db::summarize(database, args.confidence));
+}
+
+void run_percentiles(const QueryArgs& args) {
+    const db::Quantity quantity = db::parse_quantity(args.of);
+    const db::Grouping grouping = grouping_of(args);
+    std::vector<double> ps;
+    for (const double level : args.levels) ps.push_back(level / 100.0);
+    const db::ResultsDb database = open_database(args);
+    write_percentiles(std::cout, format_of(args), args.database,
+                      db::percentiles(database, quantity, ps, grouping, args.confidence),
+                      grouping.by);
+}
+
+void run_exceed(const QueryArgs& args) {
+    // --distance D is the common question; --of Q --value V asks the same of another quantity.
+    if (args.distance.has_value() == args.value.has_value()) {
+        throw std::invalid_argument(
+            "exceed needs --distance D (m past the toe) or --of QUANTITY --value V");
+    }
+    const db::Quantity quantity = args.distance ? db::Quantity::reach : db::parse_quantity(args.of);
+    const double threshold = args.distance ? *args.distance : *args.value;
+    const db::Grouping grouping = grouping_of(args);
+    const db::IntervalMethod method = db::parse_interval_method(args.interval);
+    const db::ResultsDb database = open_database(args);
+    write_exceedance(
+        std::cout, format_of(args), args.database,
+        db::exceedance(database, quantity, threshold, grouping, method, args.confidence),
+        grouping.by);
+}
+
+void run_worst(const QueryArgs& args) {
+    const db::Quantity by = db::parse_quantity(args.worst_by);
+    if (args.count < 1) {
+        throw std::invalid_argument("--n = " + std::to_string(args.count) + ": must be >= 1");
+    }
+    const db::ResultsDb database = open_database(args);
+    write_worst(std::cout, format_of(args), args.database, by,
+                db::worst_samples(database, by, args.count));
+}
+
+std::vector<std::string> quantity_names() {
+    std::vector<std::string> names;
+    for (const db::Quantity q : db::all_quantities) names.emplace_back(db::to_string(q));
+    return names;
+}
+
+// Options every query has: output format and confidence.
+void add_common(CLI::App* cmd, QueryArgs& args) {
+    CLI::Option* json = cmd->add_flag("--json", args.json, "Print one JSON document");
+    cmd->add_flag("--csv", args.csv, "Print CSV (units in the column names)")->excludes(json);
+    cmd->add_option("--confidence", args.confidence, "Confidence of the intervals, in (0, 1)")
+        ->capture_default_str();
+}
+
+void add_grouping(CLI::App* cmd, QueryArgs& args) {
+    cmd->add_option("--by", args.group, "Break down by shape kind, size class or release zone")
+        ->check(CLI::IsMember({"kind", "size", "zone"}));
+    cmd->add_option("--size-classes", args.size_classes,
+                    "Size class edges (m), ascending, e.g. 0.2,0.3,0.4; default: quartiles")
+        ->delimiter(',');
+}
+
+}  // namespace
+
+void register_query(CLI::App& app) {
+    auto args = std::make_shared<QueryArgs>();
+    CLI::App* query =
+        app.add_subcommand("query", "Questions on a results database written by `rockfall sweep`");
+    query->add_option("database", args->database, "Results database (.db)")->required();
+    query->require_subcommand(1);
+
+    CLI::App* summary = query->add_subcommand(
+        "summary", "The run, stop reasons, reach, wall and station shares, wall loads");
+    add_common(summary, *args);
+    summary->callback([args] { run_summary(*args); });
+
+    CLI::App* pct = query->add_subcommand(
+        "percentiles", "Percentiles with distribution-free confidence intervals");
+    pct->add_option("--of", args->of, "Quantity")
+        ->check(CLI::IsMember(quantity_names()))
+        ->capture_default_str();
+    pct->add_option("--p", args->levels, "Percentiles in (0, 100), e.g. 50,90,95,99")
+        ->delimiter(',');
+    add_grouping(pct, *args);
+    add_common(pct, *args);
+    pct->callback([args] { run_percentiles(*args); });
+
+    CLI::App* exceed = query->add_subcommand(
+        "exceed", "Probability that a rock's reach (or another quantity) is >= a value");
+    CLI::Option* distance =
+        exceed->add_option("--distance", args->distance, "Horizontal distance past the toe (m)");
+    exceed->add_option("--of", args->of, "Quantity other than reach (with --value)")
+        ->check(CLI::IsMember(quantity_names()))
+        ->excludes(distance);
+    exceed->add_option("--value", args->value, "Threshold of --of, in its unit")
+        ->excludes(distance);
+    exceed->add_option("--interval", args->interval, "Interval for the probability")
+        ->check(CLI::IsMember({"wilson", "clopper-pearson"}))
+        ->capture_default_str();
+    add_grouping(exceed, *args);
+    add_common(exceed, *args);
+    exceed->callback([args] { run_exceed(*args); });
+
+    CLI::App* worst =
+        query->add_subcommand("worst", "The worst samples with their index and seed, for replay");
+    worst->add_option("--n", args->count, "How many samples")->capture_default_str();
+    worst->add_option("--by", args->worst_by, "Quantity to rank by")
+        ->check(CLI::IsMember(quantity_names()))
+        ->capture_default_str();
+    add_common(worst, *args);
+    worst->callback([args] { run_worst(*args); });
+}
+
+}  // namespace rockfall::app
