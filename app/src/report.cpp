@@ -14,7 +14,13 @@ namespace {
 nlohmann::json vec_json(const engine::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 double rock_mass(const engine::RockSpec& rock) {
-    return shapes::make_rock(rock.kind, rock.size).properties.volume * rock.density;
+    return rock.geometry().properties.volume * rock.density;
+}
+
+// "massive", or "custom 'cube'" for a mesh, catalogue or generated shape.
+std::string rock_label(const engine::RockSpec& rock) {
+    const std::string kind(shapes::to_string(rock.kind));
+    return rock.shape ? kind + " '" + rock.shape->name + "'" : kind;
 }
 
 std::string hex(std::uint64_t value) {
@@ -67,9 +73,9 @@ void print_summary(std::ostream& out, const engine::Scenario& scenario,
     for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
         const auto& spec = scenario.rocks[i].rock;
         const auto& rock = outcome.rocks[i];
-        out << "rock " << i + 1 << ": " << shapes::to_string(spec.kind) << ' '
-            << fmt("%.3f m", spec.size) << ", " << fmt("%.0f kg/m3", spec.density) << ", "
-            << fmt("%.2f kg", rock_mass(spec)) << '\n';
+        out << "rock " << i + 1 << ": " << rock_label(spec) << ' ' << fmt("%.3f m", spec.size)
+            << ", " << fmt("%.0f kg/m3", spec.density) << ", " << fmt("%.2f kg", rock_mass(spec))
+            << '\n';
         out << "  stopped: " << engine::to_string(rock.stop) << " at "
             << fmt("%.3f s", rock.stop_time) << '\n';
         const auto& p = rock.final_state.position;
@@ -129,6 +135,7 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
                   {{"columns", {"time_s", "normal_N", "tangential_N"}}, {"rows", history}}}});
         }
         rocks.push_back({{"kind", shapes::to_string(spec.kind)},
+                         {"shape_name", spec.shape ? nlohmann::json(spec.shape->name) : nullptr},
                          {"size_m", spec.size},
                          {"density_kg_m3", spec.density},
                          {"mass_kg", rock_mass(spec)},

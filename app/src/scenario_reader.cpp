@@ -1,5 +1,7 @@
 #include "scenario_reader.hpp"
 
+#include "scenario_rock_shape.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <limits>
@@ -190,11 +192,12 @@ void read_wall_contact(TableReader& r, engine::WallContact& contact) {
     read_fields(r, contact, wall_contact_fields);
 }
 
-void read_rock(TableReader& r, engine::RockRelease& rock) {
+void read_rock(TableReader& r, engine::RockRelease& rock, RockShapeCache& shape_cache) {
     std::array<std::string_view, all_rock_kinds.size()> names;
     for (std::size_t i = 0; i < names.size(); ++i) names[i] = shapes::to_string(all_rock_kinds[i]);
     if (const auto index = read_choice(r, "kind", names)) rock.rock.kind = all_rock_kinds[*index];
     read_fields(r, rock.rock, rock_fields);
+    read_rock_shape(r, rock.rock, shape_cache);
     read_material(r, "material", rock.rock.material);
     with_table(r, "release", [&](TableReader& s) { read_fields(s, rock.release, release_fields); });
 }
@@ -245,7 +248,10 @@ engine::Scenario read_scenario(const toml::table& root, const std::string& file,
     });
     with_table(r, "wall_contact",
                [&](TableReader& s) { read_wall_contact(s, scenario.wall_contact); });
-    with_table_array(r, "rocks", scenario.rocks, read_rock);
+    RockShapeCache shape_cache;
+    with_table_array(r, "rocks", scenario.rocks, [&](TableReader& s, engine::RockRelease& rock) {
+        read_rock(s, rock, shape_cache);
+    });
     read_list(r, "stations", scenario.stations, "distances (m)",
               [&](const toml::node& item, const std::string& path) -> std::optional<double> {
                   if (std::optional<double> value = number_of(item)) return value;

@@ -75,6 +75,9 @@ class TableReader {
     // The node at `key`, or null when absent; `key` becomes one of the table's known keys.
     const toml::node* get(std::string_view key);
 
+    // Whether the table has `key`, without making it known.
+    bool contains(std::string_view key) const { return table_.contains(key); }
+
     std::string path(std::string_view key) const {
         return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
     }

@@ -174,13 +174,23 @@ void check_rock(Checker& c, const engine::Scenario& s, std::size_t index, bool p
                "must be in [0, " + format_number(profile.inclined_length) +
                    ") so that the rock starts on the inclined part, above the toe");
     }
+    // A custom shape is what makes a rock custom (scenario files set both or neither).
+    const bool custom = rock.rock.kind == shapes::RockKind::custom;
+    if (custom != (rock.rock.shape != nullptr)) {
+        c.fail(path + ".kind", "\"" + std::string(shapes::to_string(rock.rock.kind)) + "\"",
+               custom ? "a custom rock needs a shape (mesh, catalogue with entry, or vertices)"
+                      : "a rock with a custom shape must be of kind custom");
+        return;
+    }
     if (size_ok) {
         // The bounding sphere keeps every orientation, random ones included, off the side walls.
-        const double radius = shapes::make_rock(rock.rock.kind, rock.rock.size).bounding_radius;
+        const double radius = rock.rock.geometry().bounding_radius;
         const double half_room = 0.5 * s.slope.width - radius;
         if (half_room < 0.0) {
             c.fail(path + ".size", format_number(rock.rock.size) + " m",
-                   "a " + std::string(shapes::to_string(rock.rock.kind)) +
+                   "a " +
+                       (custom ? "rock '" + rock.rock.shape->name + "'"
+                               : std::string(shapes::to_string(rock.rock.kind))) +
                        " this size (bounding radius " + format_number(radius) +
                        " m) is wider than the slope (" + format_number(s.slope.width) + " m)");
         } else if (std::abs(rock.release.lateral) > half_room) {

@@ -100,7 +100,17 @@ std::string format_scenario(const engine::Scenario& s) {
 
     for (const engine::RockRelease& rock : s.rocks) {
         w.array_header("rocks");
-        w.line("kind", toml_string(shapes::to_string(rock.rock.kind)));
+        if (rock.rock.shape) {
+            // The hull itself, so that the text stands alone (no mesh file to look for).
+            w.line("shape_name", toml_string(rock.rock.shape->name));
+            std::string points;
+            for (const shapes::Vec3& v : rock.rock.shape->hull.vertices) {
+                points += "\n    " + value_text(engine::Vec3(v)) + ",";
+            }
+            w.line("vertices", "[" + points + "\n]");
+        } else {
+            w.line("kind", toml_string(shapes::to_string(rock.rock.kind)));
+        }
         w.fields(rock.rock, detail::rock_fields);
         w.header("rocks.material");
         w.fields(rock.rock.material, detail::material_fields);

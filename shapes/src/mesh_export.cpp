@@ -1,5 +1,7 @@
 #include "shapes/mesh_io.hpp"
 
+#include <Eigen/Geometry>
+
 #include <charconv>
 #include <ostream>
 
