@@ -16,9 +16,14 @@ void register_simulate(CLI::App& app);
 /// `rockfall soil SCENARIO`: one soil flow (MPM) with the wall load history, runout and deposit.
 void register_soil(CLI::App& app);
 
-/// `rockfall formula NAME`: one impact design formula (Japan Road Association or seed 000's
-/// proposal) evaluated for a mass and an impact velocity or fall height.
+/// `rockfall formula NAME`: one impact design formula (Japan Road Association, seed 000's
+/// proposal, Labiouse et al. 1996, ASTRA 2008) evaluated for a mass and an impact velocity or
+/// fall height, or UNI 11211-4 design values from a sample of speeds and heights.
 void register_formula(CLI::App& app);
+
+/// `rockfall fit CSV`: identifies the impact formula's lambda, beta and alpha from impacts
+/// (seed 000's procedure) with the fit's quality and range, and optionally its figure.
+void register_fit(CLI::App& app);
 
 /// `rockfall shape --kind K`: the shape measures of one rock (volume, inertia, axis lengths,
 /// sphericities) and optionally its simulated hull as an OBJ file.

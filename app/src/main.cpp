@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     rockfall::app::register_simulate(app);
     rockfall::app::register_soil(app);
     rockfall::app::register_formula(app);
+    rockfall::app::register_fit(app);
     rockfall::app::register_shape(app);
     rockfall::app::register_query(app);
     try {

@@ -1,0 +1,259 @@
+// `rockfall fit CSV`: seed 000's identification of the impact formula's coefficients from
+// measured or simulated impacts, per shape, with the fit's quality, range and a figure.
+
+#include "commands.hpp"
+#include "fit_figure.hpp"
+#include "text_format.hpp"
+
+#include "app/impact_csv.hpp"
+#include "risk/formulas.hpp"
+#include "risk/impact_fit.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rockfall::app {
+namespace {
+
+struct FitArgs {
+    std::string input;
+    std::optional<std::string> shape;
+    std::optional<double> lambda;
+    std::string regression = "power";
+    std::optional<double> mass;
+    std::optional<std::string> svg;
+    bool json = false;
+};
+
+constexpr double kilo = 1.0e3;
+constexpr risk::ImpactShape all_shapes[] = {risk::ImpactShape::sphere, risk::ImpactShape::massive,
+                                            risk::ImpactShape::planar};
+
+// Where lambda comes from, as seed 000 did it: identified on the spheres, then held fixed
+// while beta is identified for the other shapes.
+enum class LambdaSource { identified, given, spheres };
+
+struct Result {
+    ShapeFit fit;
+    LambdaSource lambda_source = LambdaSource::identified;
+};
+
+std::vector<risk::ImpactRow> of_shape(const std::vector<risk::ImpactRow>& rows,
+                                      risk::ImpactShape shape) {
+    std::vector<risk::ImpactRow> out;
+    std::copy_if(rows.begin(), rows.end(), std::back_inserter(out),
+                 [&](const risk::ImpactRow& r) { return r.shape == shape; });
+    return out;
+}
+
+std::string shape_counts(const std::vector<risk::ImpactRow>& rows) {
+    std::string out;
+    for (const risk::ImpactShape shape : all_shapes) {
+        const std::size_t n = of_shape(rows, shape).size();
+        if (n > 0) {
+            out += (out.empty() ? "" : ", ") + std::string(risk::to_string(shape)) + ' ' +
+                   std::to_string(n);
+        }
+    }
+    return out;
+}
+
+std::vector<Result> identify(const FitArgs& args, const std::vector<risk::ImpactRow>& rows) {
+    risk::FitOptions base;
+    base.form = risk::parse_regression_form(args.regression);
+    base.reference_mass = args.mass;
+
+    std::vector<risk::ImpactShape> shapes;
+    for (const risk::ImpactShape shape : all_shapes) {
+        if (!of_shape(rows, shape).empty()) shapes.push_back(shape);
+    }
+    if (args.shape) {
+        const risk::ImpactShape wanted = risk::parse_impact_shape(*args.shape);
+        if (of_shape(rows, wanted).empty()) {
+            throw std::invalid_argument(args.input + " has no rows of shape " + *args.shape +
+                                        " (it has: " + shape_counts(rows) + ")");
+        }
+        shapes = {wanted};
+    }
+
+    std::optional<double> sphere_lambda;
+    const std::vector<risk::ImpactRow> spheres = of_shape(rows, risk::ImpactShape::sphere);
+    if (!args.lambda && !spheres.empty()) {
+        sphere_lambda = risk::fit_impacts(spheres, base).coefficients.lambda;
+    }
+    std::vector<Result> results;
+    for (const risk::ImpactShape shape : shapes) {
+        Result result;
+        risk::FitOptions options = base;
+        if (args.lambda) {
+            options.lambda = args.lambda;
+            result.lambda_source = LambdaSource::given;
+        } else if (sphere_lambda && shape != risk::ImpactShape::sphere) {
+            options.lambda = sphere_lambda;
+            result.lambda_source = LambdaSource::spheres;
+        }
+        result.fit.shape = shape;
+        result.fit.rows = of_shape(rows, shape);
+        result.fit.fit = risk::fit_impacts(result.fit.rows, options);
+        results.push_back(std::move(result));
+    }
+    return results;
+}
+
+const char* lambda_text(LambdaSource source) {
+    switch (source) {
+        case LambdaSource::identified:
+            return "identified on the mean line (beta = 1)";
+        case LambdaSource::given:
+            return "given (--lambda); beta identified on the mean line";
+        case LambdaSource::spheres:
+            return "identified on this file's spheres; beta identified on the mean line";
+    }
+    return "";
+}
+
+const char* lambda_key(LambdaSource source) {
+    switch (source) {
+        case LambdaSource::identified:
+            return "identified";
+        case LambdaSource::given:
+            return "given";
+        case LambdaSource::spheres:
+            return "spheres";
+    }
+    return "";
+}
+
+std::string line_text(const risk::ImpactRegression& r) {
+    if (r.form == risk::RegressionForm::power) {
+        return fmt("P = %.4g", r.a / kilo) + fmt(" v^%.4g kN", r.b) +
+               fmt(" (v in m/s); R^2 = %.3f on ln P", r.r_squared) +
+               fmt("; sigma = %.3g (of ln P)", r.sigma);
+    }
+    return fmt("P = %.4g", r.a / kilo) + fmt(" + %.4g v kN", r.b / kilo) +
+           fmt(" (v in m/s); R^2 = %.3f", r.r_squared) + fmt("; sigma = %.4g kN", r.sigma / kilo);
+}
+
+void print_text(const FitArgs& args, std::size_t total, const std::vector<Result>& results) {
+    std::cout << "impacts: " << args.input << " (" << total << " rows)\n"
+              << "regression: " << args.regression
+              << (args.regression == "power"
+                      ? ", P = a v^b by least squares on ln P; sigma is the residual sd of ln P"
+                      : ", P = a + b v by least squares; sigma is the residual sd of P")
+              << '\n';
+    for (const Result& result : results) {
+        const risk::ImpactFit& f = result.fit.fit;
+        const risk::ImpactCoefficients& c = f.coefficients;
+        const risk::ImpactCoefficients preset = risk::seed_coefficients(result.fit.shape);
+        std::cout << '\n'
+                  << risk::to_string(result.fit.shape) << ": " << f.count << " rows\n"
+                  << "  valid for: impact velocity " << fmt("%.4g", f.velocity_min) << " .. "
+                  << fmt("%.4g m/s", f.velocity_max) << ", mass " << fmt("%.4g", f.mass_min)
+                  << " .. " << fmt("%.4g kg", f.mass_max)
+                  << fmt(" (regression at %.4g kg)", f.reference_mass) << '\n'
+                  << "  mean line: " << line_text(f.regression) << '\n'
+                  << "  lambda = " << fmt("%.4g Pa", c.lambda)
+                  << fmt(" (%.4g MN/m2), ", c.lambda / 1e6) << lambda_text(result.lambda_source)
+                  << '\n'
+                  << "  beta = " << fmt("%.3g", c.beta) << '\n'
+                  << "  alpha = " << fmt("%.3g", c.alpha)
+                  << ", identified on the mean + 1 sigma line\n"
+                  << "  formula vs lines at the data: mean within "
+                  << fmt("%.1f %%", 100.0 * f.mean_mismatch) << ", mean + 1 sigma within "
+                  << fmt("%.1f %%", 100.0 * f.upper_mismatch) << '\n'
+                  << "  seed 000 preset: lambda " << fmt("%.4g Pa", preset.lambda) << ", alpha "
+                  << fmt("%.3g", preset.alpha) << ", beta " << fmt("%.3g", preset.beta) << '\n';
+    }
+    if (args.svg) std::cout << "\nfigure written to " << *args.svg << '\n';
+}
+
+nlohmann::json to_json(const FitArgs& args, std::size_t total, const std::vector<Result>& results) {
+    nlohmann::json fits = nlohmann::json::array();
+    for (const Result& result : results) {
+        const risk::ImpactFit& f = result.fit.fit;
+        const risk::ImpactCoefficients preset = risk::seed_coefficients(result.fit.shape);
+        const bool power = f.regression.form == risk::RegressionForm::power;
+        fits.push_back(
+            {{"shape", std::string(risk::to_string(result.fit.shape))},
+             {"rows", f.count},
+             {"velocity_min_m_s", f.velocity_min},
+             {"velocity_max_m_s", f.velocity_max},
+             {"mass_min_kg", f.mass_min},
+             {"mass_max_kg", f.mass_max},
+             {"reference_mass_kg", f.reference_mass},
+             {"regression",
+              {{"form", std::string(risk::to_string(f.regression.form))},
+               {"a", f.regression.a},
+               {"a_unit", power ? "N (s/m)^b" : "N"},
+               {"b", f.regression.b},
+               {"b_unit", power ? "1" : "N s/m"},
+               {"sigma", f.regression.sigma},
+               {"sigma_unit", power ? "1 (of ln P)" : "N"},
+               {"r_squared", f.regression.r_squared}}},
+             {"lambda_Pa", f.coefficients.lambda},
+             {"lambda_source", lambda_key(result.lambda_source)},
+             {"alpha", f.coefficients.alpha},
+             {"beta", f.coefficients.beta},
+             {"mean_mismatch", f.mean_mismatch},
+             {"upper_mismatch", f.upper_mismatch},
+             {"seed_preset",
+              {{"lambda_Pa", preset.lambda}, {"alpha", preset.alpha}, {"beta", preset.beta}}}});
+    }
+    return {{"input", args.input},
+            {"rows", total},
+            {"regression", args.regression},
+            {"fits", fits},
+            {"svg", args.svg ? nlohmann::json(*args.svg) : nlohmann::json(nullptr)}};
+}
+
+void run(const FitArgs& args) {
+    const std::vector<risk::ImpactRow> rows = read_impact_csv(args.input);
+    const std::vector<Result> results = identify(args, rows);
+    if (args.svg) {
+        std::vector<ShapeFit> fits;
+        for (const Result& r : results) fits.push_back(r.fit);
+        const std::string name = std::filesystem::path(args.input).filename().string();
+        write_svg(*args.svg, fit_figure(fits, "Peak load against impact velocity: " + name));
+    }
+    if (args.json) {
+        std::cout << to_json(args, rows.size(), results).dump(2) << '\n';
+        return;
+    }
+    print_text(args, rows.size(), results);
+}
+
+}  // namespace
+
+void register_fit(CLI::App& app) {
+    auto args = std::make_shared<FitArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "fit",
+        "Identify the impact formula's lambda, beta and alpha from impacts (seed 000's "
+        "procedure): regression of peak load on impact velocity, mean and mean + 1 sigma");
+    cmd->add_option("input", args->input,
+                    "CSV with columns velocity_m_s, peak_force_kN (or peak_force_N), mass_kg, "
+                    "shape")
+        ->required();
+    cmd->add_option("--shape", args->shape, "Fit only this shape: sphere, massive or planar");
+    cmd->add_option("--lambda", args->lambda,
+                    "Hold the Lame constant (Pa) fixed and identify beta; default: identified "
+                    "on the file's spheres");
+    cmd->add_option("--regression", args->regression, "Regression form: power or linear")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"power", "linear"}));
+    cmd->add_option("--mass", args->mass,
+                    "Reference mass (kg) the loads are scaled to by m^(2/3); default: median");
+    cmd->add_option("--svg", args->svg, "Write the figure (peak load against velocity) as SVG");
+    cmd->add_flag("--json", args->json, "Print one JSON document instead of the summary");
+    cmd->callback([args] { run(*args); });
+}
+
+}  // namespace rockfall::app
