@@ -213,7 +213,7 @@ double cdf(const Distribution& d, double x) {
         case Family::uniform:
             return std::clamp((x - d.min) / (d.max - d.min), 0.0, 1.0);
         case Family::triangular: {
-            // Piecewise quadratic (Johnson, Kotz and Balakrishnan 1995, vol. 2, ch. 26.10).
+            // Piecewise quadratic (Kotz and van Dorp, Beyond Beta, 2004, ch. 1).
             if (x <= d.min) return 0.0;
             if (x >= d.max) return 1.0;
             const double width = d.max - d.min;
@@ -225,9 +225,11 @@ double cdf(const Distribution& d, double x) {
             if (x < support(d).lower) return 0.0;
             if (x >= d.max) return 1.0;
             const Interval bounds = standard_bounds(d);
-            const double z = d.family == Family::normal
-                                 ? (x - d.mean) / d.sd
-                                 : (std::log(x) - log_parameters(d).mu) / log_parameters(d).sigma;
+            double z = (x - d.mean) / d.sd;
+            if (d.family == Family::lognormal) {
+                const LogParameters log = log_parameters(d);
+                z = (std::log(x) - log.mu) / log.sigma;
+            }
             return std::clamp(normal_mass(bounds.lower, std::max(z, bounds.lower)) /
                                   normal_mass(bounds.lower, bounds.upper),
                               0.0, 1.0);

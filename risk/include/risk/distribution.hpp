@@ -85,8 +85,8 @@ double inverse_cdf_within(const Distribution& distribution, double lo, double hi
 /// Analytic mean of the (truncated) distribution, in its unit; for tests and reports.
 /// Truncated normal: mu + sigma (phi(a) - phi(b)) / Z; truncated lognormal: the partial
 /// moments exp(k mu + k^2 sigma^2 / 2) (Phi(b - k sigma) - Phi(a - k sigma)) / Z (Johnson,
-/// Kotz and Balakrishnan, Continuous Univariate Distributions, vol. 1, 2nd ed., 1994,
-/// sections 13.10.1 and 14.3), with a, b the standardized bounds and Z = Phi(b) - Phi(a).
+/// Kotz and Balakrishnan, Continuous Univariate Distributions, vol. 1, 2nd ed., 1994, ch. 13
+/// and 14), with a, b the standardized bounds and Z = Phi(b) - Phi(a).
 double distribution_mean(const Distribution& distribution);
 
 /// Analytic variance of the (truncated) distribution, in its unit squared. The truncated
