@@ -56,7 +56,7 @@ struct SweepSpec {
     Distribution rolling_resistance = fixed(0.02);
     /// Release zones (at least one).
     std::vector<ReleaseZone> zones = {ReleaseZone{}};
-    /// Clearance kept between the rock and each slope edge when clamping lateral, m (>= 0).
+    /// Clearance kept between the rock's bounding sphere and each slope edge, m (>= 0).
     double lateral_margin = 0.05;
     /// Initial speed along the downslope surface tangent at the release point, m/s (>= 0).
     Distribution speed = fixed(0.0);
@@ -99,7 +99,7 @@ std::vector<SweepProblem> find_problems(const SweepSpec& spec, const engine::Sce
 /// "key = message", when there is any.
 void validate(const SweepSpec& spec, const engine::Scenario& base);
 
-/// Sample i's inputs, after clamping (what the engine runs).
+/// Sample i's inputs, the lateral position inside its band (what the engine runs).
 struct SampleInputs {
     /// Sample index, 0-based.
     std::int64_t index = 0;
