@@ -1,11 +1,12 @@
-// `rockfall fit CSV`: seed 000's identification of the impact formula's coefficients from
-// measured or simulated impacts, per shape, with the fit's quality, range and a figure.
+// `rockfall fit CSV|DB`: seed 000's identification of the impact formula's coefficients from
+// measured (CSV) or simulated (results database) impacts, per shape, with the fit's quality,
+// range and a figure.
 
 #include "commands.hpp"
 #include "fit_figure.hpp"
+#include "impact_source.hpp"
 #include "text_format.hpp"
 
-#include "app/impact_csv.hpp"
 #include "risk/formulas.hpp"
 #include "risk/impact_fit.hpp"
 
@@ -29,6 +30,7 @@ struct FitArgs {
     std::optional<double> lambda;
     std::string regression = "power";
     std::optional<double> mass;
+    std::optional<std::string> velocity;
     std::optional<std::string> svg;
     bool json = false;
 };
@@ -142,8 +144,18 @@ std::string line_text(const risk::ImpactRegression& r) {
            fmt(" (v in m/s); R^2 = %.3f", r.r_squared) + fmt("; sigma = %.4g kN", r.sigma / kilo);
 }
 
-void print_text(const FitArgs& args, std::size_t total, const std::vector<Result>& results) {
-    std::cout << "impacts: " << args.input << " (" << total << " rows)\n"
+std::string source_text(const FitArgs& args, const ImpactData& data) {
+    if (!data.from_database) return args.input + " (" + std::to_string(data.rows.size()) + " rows)";
+    return args.input + " (results database: " + std::to_string(data.rows.size()) +
+           " wall hits, velocity " + args.velocity.value_or("normal") +
+           (data.skipped ? ", " + std::to_string(data.skipped) +
+                               " hits of other kinds or without a load left out"
+                         : std::string()) +
+           ")";
+}
+
+void print_text(const FitArgs& args, const ImpactData& data, const std::vector<Result>& results) {
+    std::cout << "impacts: " << source_text(args, data) << '\n'
               << "regression: " << args.regression
               << (args.regression == "power"
                       ? ", P = a v^b by least squares on ln P; sigma is the residual sd of ln P"
@@ -175,7 +187,8 @@ void print_text(const FitArgs& args, std::size_t total, const std::vector<Result
     if (args.svg) std::cout << "\nfigure written to " << *args.svg << '\n';
 }
 
-nlohmann::json to_json(const FitArgs& args, std::size_t total, const std::vector<Result>& results) {
+nlohmann::json to_json(const FitArgs& args, const ImpactData& data,
+                       const std::vector<Result>& results) {
     nlohmann::json fits = nlohmann::json::array();
     for (const Result& result : results) {
         const risk::ImpactFit& f = result.fit.fit;
@@ -208,15 +221,29 @@ nlohmann::json to_json(const FitArgs& args, std::size_t total, const std::vector
               {{"lambda_Pa", preset.lambda}, {"alpha", preset.alpha}, {"beta", preset.beta}}}});
     }
     return {{"input", args.input},
-            {"rows", total},
+            {"source", data.from_database ? "database" : "csv"},
+            {"rows", data.rows.size()},
+            {"skipped", data.skipped},
+            {"velocity", data.from_database ? nlohmann::json(args.velocity.value_or("normal"))
+                                            : nlohmann::json(nullptr)},
             {"regression", args.regression},
             {"fits", fits},
             {"svg", args.svg ? nlohmann::json(*args.svg) : nlohmann::json(nullptr)}};
 }
 
 void run(const FitArgs& args) {
-    const std::vector<risk::ImpactRow> rows = read_impact_csv(args.input);
-    const std::vector<Result> results = identify(args, rows);
+    const ImpactData data =
+        load_impacts(args.input, parse_hit_velocity(args.velocity.value_or("normal")));
+    if (args.velocity && !data.from_database) {
+        throw std::invalid_argument("--velocity applies to a results database, not to " +
+                                    args.input + " (a CSV file gives velocity_m_s)");
+    }
+    if (data.rows.empty()) {
+        throw std::invalid_argument(args.input +
+                                    ": no wall hits of a sphere, massive or planar "
+                                    "rock to fit");
+    }
+    const std::vector<Result> results = identify(args, data.rows);
     if (args.svg) {
         std::vector<ShapeFit> fits;
         for (const Result& r : results) fits.push_back(r.fit);
@@ -224,10 +251,10 @@ void run(const FitArgs& args) {
         write_svg(*args.svg, fit_figure(fits, "Peak load against impact velocity: " + name));
     }
     if (args.json) {
-        std::cout << to_json(args, rows.size(), results).dump(2) << '\n';
+        std::cout << to_json(args, data, results).dump(2) << '\n';
         return;
     }
-    print_text(args, rows.size(), results);
+    print_text(args, data, results);
 }
 
 }  // namespace
@@ -239,9 +266,13 @@ void register_fit(CLI::App& app) {
         "Identify the impact formula's lambda, beta and alpha from impacts (seed 000's "
         "procedure): regression of peak load on impact velocity, mean and mean + 1 sigma");
     cmd->add_option("input", args->input,
-                    "CSV with columns velocity_m_s, peak_force_kN (or peak_force_N), mass_kg, "
-                    "shape")
+                    "Results database of a sweep, or a CSV with columns velocity_m_s, "
+                    "peak_force_kN (or peak_force_N), mass_kg, shape")
         ->required();
+    cmd->add_option("--velocity", args->velocity,
+                    "Database: the hit velocity the formula gets, normal (to the wall, default) "
+                    "or total")
+        ->check(CLI::IsMember({"normal", "total"}));
     cmd->add_option("--shape", args->shape, "Fit only this shape: sphere, massive or planar");
     cmd->add_option("--lambda", args->lambda,
                     "Hold the Lame constant (Pa) fixed and identify beta; default: identified "

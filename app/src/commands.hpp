@@ -21,9 +21,13 @@ void register_soil(CLI::App& app);
 /// fall height, or UNI 11211-4 design values from a sample of speeds and heights.
 void register_formula(CLI::App& app);
 
-/// `rockfall fit CSV`: identifies the impact formula's lambda, beta and alpha from impacts
+/// `rockfall fit CSV|DB`: identifies the impact formula's lambda, beta and alpha from impacts
 /// (seed 000's procedure) with the fit's quality and range, and optionally its figure.
 void register_fit(CLI::App& app);
+
+/// `rockfall envelope DB`: every wall impact against the design formula for its rock, the
+/// share above the envelope with its interval and the worst impacts with their seeds.
+void register_envelope(CLI::App& app);
 
 /// `rockfall shape --kind K`: the shape measures of one rock (volume, inertia, axis lengths,
 /// sphericities) and optionally its simulated hull as an OBJ file.

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     rockfall::app::register_soil(app);
     rockfall::app::register_formula(app);
     rockfall::app::register_fit(app);
+    rockfall::app::register_envelope(app);
     rockfall::app::register_shape(app);
     rockfall::app::register_query(app);
     try {

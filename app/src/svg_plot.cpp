@@ -25,19 +25,11 @@ constexpr double legend_row = 20.0;
 constexpr double legend_pad = 10.0;
 constexpr double max_legend_width = 420.0;
 
-// Heckbert (1990): a "nice" number near x (> 0): 1, 2, 5 or 10 times a power of ten, rounded
-// to the nearest when `round`, else the smallest nice number >= x.
-double nice_number(double x, bool round) {
-    const double exponent = std::floor(std::log10(x));
-    const double power = std::pow(10.0, exponent);
+// Heckbert (1990): the "nice" number nearest x (> 0), 1, 2, 5 or 10 times a power of ten.
+double nice_number(double x) {
+    const double power = std::pow(10.0, std::floor(std::log10(x)));
     const double f = x / power;
-    double nice = 10.0;
-    if (round) {
-        nice = f < 1.5 ? 1.0 : f < 3.0 ? 2.0 : f < 7.0 ? 5.0 : 10.0;
-    } else {
-        nice = f <= 1.0 ? 1.0 : f <= 2.0 ? 2.0 : f <= 5.0 ? 5.0 : 10.0;
-    }
-    return nice * power;
+    return (f < 1.5 ? 1.0 : f < 3.0 ? 2.0 : f < 7.0 ? 5.0 : 10.0) * power;
 }
 
 std::string num(double value) {
@@ -230,7 +222,7 @@ Ticks nice_ticks(double lower, double upper, int target) {
         upper += widen;
     }
     Ticks t;
-    t.step = nice_number(nice_number(upper - lower, false) / double(target - 1), true);
+    t.step = nice_number((upper - lower) / double(target - 1));
     const double first = std::floor(lower / t.step + 1e-9);
     const double last = std::ceil(upper / t.step - 1e-9);
     t.lower = first * t.step;

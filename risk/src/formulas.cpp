@@ -47,11 +47,16 @@ ImpactCoefficients seed_coefficients(ImpactShape shape) {
     throw std::invalid_argument("unknown impact shape");
 }
 
-ImpactShape parse_impact_shape(std::string_view name) {
+std::optional<ImpactShape> find_impact_shape(std::string_view name) {
     for (const ImpactShape shape :
          {ImpactShape::sphere, ImpactShape::massive, ImpactShape::planar}) {
         if (name == to_string(shape)) return shape;
     }
+    return std::nullopt;
+}
+
+ImpactShape parse_impact_shape(std::string_view name) {
+    if (const auto shape = find_impact_shape(name)) return *shape;
     throw std::invalid_argument("shape = \"" + std::string(name) +
                                 "\": must be sphere, massive or planar");
 }

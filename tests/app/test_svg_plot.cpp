@@ -21,8 +21,7 @@ std::size_t count(const std::string& text, const std::string& what) {
     return n;
 }
 
-Series series(std::string label, std::string color, std::vector<double> x,
-              std::vector<double> y) {
+Series series(std::string label, std::string color, std::vector<double> x, std::vector<double> y) {
     Series s;
     s.label = std::move(label);
     s.color = std::move(color);
@@ -55,16 +54,21 @@ TEST_CASE("nice ticks use steps of 1, 2 or 5 and cover the range", "[app][svg]")
     CHECK(t.values == std::vector<double>{0, 2, 4, 6, 8, 10});
     CHECK(t.decimals == 0);
 
-    t = nice_ticks(3.2, 9.7);  // range 6.5 -> nice 10, / 5 = 2: ticks 2..10
-    CHECK(t.step == 2.0);
-    CHECK(t.lower == 2.0);
+    t = nice_ticks(3.2, 9.7);  // 6.5 / 5 = 1.3, nearest nice 1: ticks 3..10
+    CHECK(t.step == 1.0);
+    CHECK(t.lower == 3.0);
     CHECK(t.upper == 10.0);
 
-    t = nice_ticks(0.013, 0.087);  // range 0.074 -> 0.1, / 5 = 0.02
-    CHECK_THAT(t.step, WithinAbs(0.02, 1e-15));
+    t = nice_ticks(0.0, 1014.0);  // 202.8 -> 200: 0..1200, not Heckbert's 0..1500
+    CHECK(t.step == 200.0);
+    CHECK(t.upper == 1200.0);
+
+    t = nice_ticks(0.013, 0.087);  // 0.0148 -> 0.01
+    CHECK_THAT(t.step, WithinAbs(0.01, 1e-15));
     CHECK(t.decimals == 2);
-    CHECK_THAT(t.lower, WithinAbs(0.0, 1e-15));
-    CHECK_THAT(t.upper, WithinAbs(0.1, 1e-15));
+    CHECK_THAT(t.lower, WithinAbs(0.01, 1e-15));
+    CHECK_THAT(t.upper, WithinAbs(0.09, 1e-15));
+    CHECK(t.values.size() == 9);
 
     t = nice_ticks(-1.0, 1.0, 5);  // range 2 -> 2, / 4 = 0.5
     CHECK(t.step == 0.5);

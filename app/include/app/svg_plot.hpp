@@ -24,8 +24,10 @@ struct Ticks {
 
 /// Ticks for the range [lower, upper] (finite, lower <= upper; an empty range is widened)
 /// with about `target` ticks (>= 2), by Heckbert's nice numbers ("Nice numbers for graph
-/// labels", Graphics Gems, 1990): step = nice(nice(range) / (target - 1)), then the range
-/// rounded out to whole steps. Throws std::invalid_argument on a non-finite or reversed range.
+/// labels", Graphics Gems, 1990): the step is the nice number nearest range / (target - 1)
+/// (without Heckbert's first rounding of the range, which can double the step), and the range
+/// is rounded out to whole steps. Throws std::invalid_argument on a non-finite or reversed
+/// range.
 Ticks nice_ticks(double lower, double upper, int target = 6);
 
 /// The symbol drawn at each point of a series.

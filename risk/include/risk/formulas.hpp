@@ -12,6 +12,7 @@
 /// on the mean + 1 sigma regression) and beta (rock shape, identified on the mean regression),
 /// with lambda = 500 MN/m2 identified for about 20 cm model rocks hitting a concrete wall.
 
+#include <optional>
 #include <string_view>
 
 namespace rockfall::risk {
@@ -54,6 +55,9 @@ ImpactCoefficients seed_coefficients(ImpactShape shape);
 
 /// The shape named "sphere", "massive" or "planar"; throws std::invalid_argument otherwise.
 ImpactShape parse_impact_shape(std::string_view name);
+
+/// The shape of that name, or nothing for any other name (rock kinds without a shape class).
+std::optional<ImpactShape> find_impact_shape(std::string_view name);
 
 /// The lower-case name of a shape, as parse_impact_shape reads it.
 std::string_view to_string(ImpactShape shape);

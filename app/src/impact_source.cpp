@@ -1,0 +1,64 @@
+// Wall impacts from a CSV file or a results database (see impact_source.hpp).
+
+#include "impact_source.hpp"
+
+#include "app/impact_csv.hpp"
+#include "db/results_db.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+
+namespace rockfall::app {
+namespace {
+
+bool positive(double x) { return std::isfinite(x) && x > 0.0; }
+
+}  // namespace
+
+HitVelocity parse_hit_velocity(const std::string& name) {
+    if (name == "normal") return HitVelocity::normal;
+    if (name == "total") return HitVelocity::total;
+    throw std::invalid_argument("--velocity = \"" + name + "\": must be normal or total");
+}
+
+bool is_sqlite_file(const std::filesystem::path& path) {
+    // Every SQLite 3 database starts with these 16 bytes (sqlite.org/fileformat.html, 1.3.1).
+    static constexpr char magic[] = "SQLite format 3";
+    char head[sizeof magic] = {};
+    std::ifstream in(path, std::ios::binary);
+    in.read(head, sizeof head);
+    return in.gcount() == static_cast<std::streamsize>(sizeof head) &&
+           std::equal(head, head + sizeof head, magic);
+}
+
+ImpactData database_impacts(const std::filesystem::path& path, HitVelocity velocity) {
+    const db::ResultsDb database = db::ResultsDb::open(path, false);
+    ImpactData data;
+    data.from_database = true;
+    for (db::WallImpact& hit : db::read_wall_impacts(database)) {
+        risk::ImpactRow row;
+        row.velocity = velocity == HitVelocity::normal ? hit.normal_speed : hit.impact_speed;
+        row.peak_force = hit.peak_force;
+        row.mass = hit.mass;
+        const std::optional<risk::ImpactShape> shape = risk::find_impact_shape(hit.kind);
+        if (!shape || !positive(row.velocity) || !positive(row.peak_force) || !positive(row.mass)) {
+            ++data.skipped;
+            continue;
+        }
+        row.shape = *shape;
+        data.rows.push_back(row);
+        data.hits.push_back(std::move(hit));
+    }
+    return data;
+}
+
+ImpactData load_impacts(const std::filesystem::path& path, HitVelocity velocity) {
+    if (is_sqlite_file(path)) return database_impacts(path, velocity);
+    ImpactData data;
+    data.rows = read_impact_csv(path);
+    return data;
+}
+
+}  // namespace rockfall::app
