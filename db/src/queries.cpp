@@ -53,14 +53,18 @@ double round_to_significant(double value, int digits) {
 // The default size classes: edges at the quartiles of the stored sizes, rounded so that the
 // labels read well.
 std::vector<double> quartile_edges(const ResultsDb& db) {
-    sql::Statement select(db.handle(), db.path(),
-                          "SELECT size_m FROM samples WHERE size_m > 0 ORDER BY size_m");
+    sql::Statement select(db.handle(), db.path(), "SELECT size_m FROM samples WHERE size_m > 0");
     std::vector<double> sizes;
     while (select.step()) sizes.push_back(select.real(0));
     std::vector<double> edges;
     if (sizes.empty()) return edges;
     for (const double p : {0.25, 0.5, 0.75}) {
-        const double edge = round_to_significant(risk::quantile(sizes, p), 2);
+        // The order statistic nearest the quartile (type 1, Hyndman and Fan 1996) is plenty
+        // for a class edge rounded to two digits, and nth_element finds it without sorting.
+        const auto rank =
+            static_cast<std::ptrdiff_t>(std::ceil(p * static_cast<double>(sizes.size())) - 1.0);
+        std::nth_element(sizes.begin(), sizes.begin() + rank, sizes.end());
+        const double edge = round_to_significant(sizes[static_cast<std::size_t>(rank)], 2);
         if (edge > 0.0 && (edges.empty() || edge > edges.back())) edges.push_back(edge);
     }
     return edges;
@@ -247,26 +251,30 @@ std::vector<Group> read_groups(const ResultsDb& db, Quantity quantity, const Gro
     const std::string group_column(classifier.column());
     const std::string column(column_of(quantity));
     std::vector<Group> groups;
-    const auto count_and_read = [&](const std::string& sql, bool has_value, bool counts) {
+    // Each row: the group column, the samples the row stands for (column 1), and optionally
+    // a value (column 2).
+    const auto read = [&](const std::string& sql, bool has_value) {
         sql::Statement select(db.handle(), db.path(), sql);
         while (select.step()) {
             const std::size_t index = classifier.index(select, 0);
             if (index == classifier.size()) continue;
             grow(groups, index);
-            if (counts) ++groups[index].samples;
-            if (has_value && !select.is_null(1)) groups[index].values.push_back(select.real(1));
+            groups[index].samples += select.integer(1);
+            if (has_value && !select.is_null(2)) groups[index].values.push_back(select.real(2));
         }
     };
+    const std::string from_outcomes = " FROM outcomes o" + classifier.join("o");
     if (needs_wall_hit(quantity)) {
-        count_and_read("SELECT " + group_column + " FROM outcomes o" + classifier.join("o"), false,
-                       true);
-        count_and_read("SELECT " + group_column + ", MAX(w." + column + ") FROM wall_impacts w" +
-                           classifier.join("w") + " GROUP BY w.sample",
-                       true, false);
+        // Samples per group from the samples table alone (every sample is written with its
+        // outcome): one aggregate row without grouping, else one row per sample.
+        read("SELECT " + group_column + (grouping.by == GroupBy::none ? ", COUNT(*)" : ", 1") +
+                 " FROM samples s",
+             false);
+        read("SELECT " + group_column + ", 0, MAX(w." + column + ") FROM wall_impacts w" +
+                 classifier.join("w") + " GROUP BY w.sample",
+             true);
     } else {
-        count_and_read(
-            "SELECT " + group_column + ", o." + column + " FROM outcomes o" + classifier.join("o"),
-            true, true);
+        read("SELECT " + group_column + ", 1, o." + column + from_outcomes, true);
     }
     std::vector<Group> ordered;
     for (const std::size_t index : classifier.output_order()) {

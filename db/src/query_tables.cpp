@@ -36,6 +36,24 @@ std::int64_t count_of(const std::vector<double>& values) {
     return static_cast<std::int64_t>(values.size());
 }
 
+// Percentiles of one group's sorted values with their distribution-free intervals.
+PercentileGroup percentile_group(const Group& group, const std::vector<double>& ps,
+                                 double confidence) {
+    PercentileGroup out{group.id, group.samples, count_of(group.values), {}};
+    if (group.values.empty()) return out;
+    for (const double p : ps) {
+        PercentileRow& row = out.rows.emplace_back();
+        row.p = p;
+        row.value = risk::quantile(group.values, p);
+        const risk::QuantileRanks ranks = risk::quantile_confidence_ranks(out.n, p, confidence);
+        if (ranks.lower >= 1) row.lower = group.values[static_cast<std::size_t>(ranks.lower - 1)];
+        if (ranks.upper <= out.n) {
+            row.upper = group.values[static_cast<std::size_t>(ranks.upper - 1)];
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
 PercentileTable percentiles(const ResultsDb& db, Quantity quantity, const std::vector<double>& ps,
@@ -49,22 +67,7 @@ PercentileTable percentiles(const ResultsDb& db, Quantity quantity, const std::v
     }
     PercentileTable table{quantity, confidence, {}};
     for (const Group& group : read_groups(db, quantity, grouping)) {
-        PercentileGroup& out = table.groups.emplace_back();
-        out.id = group.id;
-        out.samples = group.samples;
-        out.n = count_of(group.values);
-        if (group.values.empty()) continue;
-        for (const double p : ps) {
-            PercentileRow& row = out.rows.emplace_back();
-            row.p = p;
-            row.value = risk::quantile(group.values, p);
-            const risk::QuantileRanks ranks = risk::quantile_confidence_ranks(out.n, p, confidence);
-            if (ranks.lower >= 1)
-                row.lower = group.values[static_cast<std::size_t>(ranks.lower - 1)];
-            if (ranks.upper <= out.n) {
-                row.upper = group.values[static_cast<std::size_t>(ranks.upper - 1)];
-            }
-        }
+        table.groups.push_back(percentile_group(group, ps, confidence));
     }
     return table;
 }
@@ -112,19 +115,36 @@ Summary summarize(const ResultsDb& db, double confidence) {
     sqlite3* handle = db.handle();
     const std::filesystem::path& path = db.path();
 
-    sql::Statement totals(handle, path,
-                          "SELECT COUNT(*), COALESCE(SUM(wall_hits > 0), 0), "
-                          "COALESCE(SUM(wall_hits), 0), MAX(reach_m) FROM outcomes");
-    totals.step();
-    summary.samples = totals.integer(0);
-    summary.wall = share(totals.integer(1), summary.samples, confidence);
-    summary.wall_impacts = totals.integer(2);
-    summary.max_reach = totals.real(3);
-
-    sql::Statement reasons(handle, path,
-                           "SELECT stop_reason, COUNT(*) AS n FROM outcomes GROUP BY stop_reason "
-                           "ORDER BY n DESC, stop_reason");
-    while (reasons.step()) summary.stop_reasons.emplace_back(reasons.text(0), reasons.integer(1));
+    // One pass over the outcomes for the counts and the reach: a COUNT/SUM query and a
+    // GROUP BY stop_reason would each scan the table again (and the GROUP BY sort it).
+    sql::Statement outcomes(handle, path, "SELECT stop_reason, wall_hits, reach_m FROM outcomes");
+    Group reach{{"all"}, 0, {}};
+    std::int64_t hitting = 0;
+    while (outcomes.step()) {
+        ++reach.samples;
+        const std::string_view reason = outcomes.text_view(0);
+        auto known = std::find_if(summary.stop_reasons.begin(), summary.stop_reasons.end(),
+                                  [&](const auto& entry) { return entry.first == reason; });
+        if (known == summary.stop_reasons.end()) {
+            known = summary.stop_reasons.emplace(known, std::string(reason), 0);
+        }
+        ++known->second;
+        const std::int64_t hits = outcomes.integer(1);
+        hitting += hits > 0 ? 1 : 0;
+        summary.wall_impacts += hits;
+        if (!outcomes.is_null(2)) reach.values.push_back(outcomes.real(2));
+    }
+    std::sort(summary.stop_reasons.begin(), summary.stop_reasons.end(),
+              [](const auto& a, const auto& b) {
+                  return a.second != b.second ? a.second > b.second : a.first < b.first;
+              });
+    std::sort(reach.values.begin(), reach.values.end());
+    summary.samples = reach.samples;
+    summary.wall = share(hitting, summary.samples, confidence);
+    if (!reach.values.empty()) summary.max_reach = reach.values.back();
+    summary.reach = {Quantity::reach, confidence, {}};
+    if (reach.samples > 0)
+        summary.reach.groups.push_back(percentile_group(reach, {0.5}, confidence));
 
     // One pass over the stations in storage order; GROUP BY station would sort every row.
     sql::Statement stations(handle, path,
@@ -145,7 +165,6 @@ Summary summarize(const ResultsDb& db, double confidence) {
     }
 
     const Grouping all;
-    summary.reach = percentiles(db, Quantity::reach, {0.5}, all, confidence);
     const std::vector<double> levels = {0.5, 0.9, 0.95, 0.99};
     summary.peak_force = percentiles(db, Quantity::peak_force, levels, all, confidence);
     summary.impact_energy = percentiles(db, Quantity::impact_energy, levels, all, confidence);
