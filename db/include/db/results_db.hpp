@@ -5,7 +5,12 @@
 ///
 /// Safety: WAL journal, one transaction per batch, so a crash or kill at any moment leaves a
 /// valid file holding whole samples only. A file is ours when its SQLite application_id is
-/// application_id below; its user_version is the schema version.
+/// application_id below; its user_version is the schema version. Readers (`rockfall query`)
+/// may run while the sweep writes.
+///
+/// Threads: a ResultsDb is used by one thread at a time (SQLite runs without its per-call
+/// mutex); a sweep with worker threads hands finished batches to one writer or serializes the
+/// calls itself.
 
 #include "engine/outcome.hpp"
 #include "risk/sampling.hpp"
@@ -83,12 +88,18 @@ struct SampleRecord {
 /// An open results database.
 class ResultsDb {
   public:
-    /// Creates a new database at `path` holding `run`; throws DatabaseError when the file
-    /// exists already or cannot be created. Nothing is left behind on failure.
+    /// Creates a new database at `path` holding `run` and opens it for writing. Throws
+    /// DatabaseError (bad_file) when the file exists already (it is never replaced) or its
+    /// directory is missing or read-only. The file is built beside the target under a hidden
+    /// temporary name and appears whole or not at all: nothing is left behind on failure.
     static ResultsDb create(const std::filesystem::path& path, const RunRecord& run);
 
-    /// Opens an existing database; throws DatabaseError for a missing, foreign, corrupt or
-    /// newer-schema file, or (writable) a read-only location. Nothing in the file changes.
+    /// Opens an existing database; throws DatabaseError (bad_file) for a missing, empty,
+    /// non-SQLite, foreign (application_id), damaged (missing tables) or newer-schema file, and
+    /// when writable for a read-only file or directory (no write bit counts as read-only even for
+    /// root) or a file failing SQLite's quick_check (a full read: about 1.5 s CPU for one
+    /// million samples). Nothing in the file changes. Read-only opens of a file in a read-only
+    /// directory use SQLite's immutable mode, refused when a -wal file holds unmerged samples.
     static ResultsDb open(const std::filesystem::path& path, bool writable);
 
     ResultsDb(ResultsDb&&) noexcept;
@@ -112,10 +123,16 @@ class ResultsDb {
     /// Deletes every sample with index >= first (and its rows), in one transaction.
     void delete_samples_from(std::int64_t first);
 
-    /// Records the end of the run: status and finished_at.
+    /// Records the end of the run: status ("running", "complete" or "interrupted") and
+    /// finished_at. Also leaves WAL mode for a rollback journal when no reader has the file
+    /// open, so a finished database is one self-contained file (open(writable) returns it to
+    /// WAL).
     void finish(const std::string& status, const std::string& finished_at);
 
-    /// The stored sample with its outcome (trajectory included); empty when absent.
+    /// The stored sample with its outcome (trajectory included); empty when absent. Not
+    /// stored, so left at their defaults: the final state's orientation, angular velocity and
+    /// energies (final_state.time is the stop time), the wall hits' force histories, and the
+    /// crossing values of stations not reached.
     std::optional<SampleRecord> sample(std::int64_t index) const;
 
     /// Whether the database was opened (or created) for writing.
