@@ -340,4 +340,14 @@ std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::in
     return worst;
 }
 
+std::vector<StoredOutcome> stored_outcomes(const ResultsDb& db) {
+    sql::Statement select(db.handle(), db.path(),
+                          "SELECT sample, reach_m, wall_hits FROM outcomes ORDER BY sample");
+    std::vector<StoredOutcome> outcomes;
+    while (select.step()) {
+        outcomes.push_back({select.integer(0), select.real(1), select.integer(2)});
+    }
+    return outcomes;
+}
+
 }  // namespace rockfall::db

@@ -234,3 +234,13 @@ TEST_CASE("quantity, grouping and interval names", "[db][query]") {
     CHECK(parse_interval_method("clopper-pearson") == IntervalMethod::clopper_pearson);
     CHECK_THROWS_AS(parse_interval_method("wald"), std::invalid_argument);
 }
+
+TEST_CASE("stored outcomes for the stop rule", "[db][query]") {
+    const std::vector<StoredOutcome> outcomes = stored_outcomes(known_database());
+    REQUIRE(outcomes.size() == 1000);
+    CHECK(outcomes[950].sample == 950);
+    CHECK(outcomes[950].reach == 9.5);
+    CHECK(outcomes[950].wall_hits == 2);  // 950 % 10 = 0: two hits
+    CHECK(outcomes[951].wall_hits == 1);
+    CHECK(outcomes[959].wall_hits == 0);
+}

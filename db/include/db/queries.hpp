@@ -199,6 +199,19 @@ struct WorstSample {
 /// without a value (NULL, no wall hit) are never among them. count >= 1.
 std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::int64_t count);
 
+/// What a stop rule needs of a stored sample's outcome.
+struct StoredOutcome {
+    /// Sample index.
+    std::int64_t sample = 0;
+    /// Reach past the toe, m (NaN when not stored), and the number of wall hits.
+    double reach = 0.0;
+    std::int64_t wall_hits = 0;
+};
+
+/// Every stored sample's reach and wall hits, by ascending sample index (for `--until` after
+/// `--resume`).
+std::vector<StoredOutcome> stored_outcomes(const ResultsDb& db);
+
 /// A proportion of samples with its interval.
 struct Share {
     /// Samples counted and trials.
