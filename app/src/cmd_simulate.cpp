@@ -5,7 +5,9 @@
 #include "report.hpp"
 
 #include "app/scenario_file.hpp"
+#include "db/results_db.hpp"
 #include "engine/simulation.hpp"
+#include "risk/sampling.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -13,6 +15,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -25,7 +28,44 @@ struct SimulateArgs {
     bool json = false;
     std::string trajectory;
     double trajectory_interval = 0.01;
+    std::string from;
+    std::int64_t sample = -1;
 };
+
+/// What to run: a scenario file, or one sample of a sweep database.
+struct Job {
+    engine::Scenario scenario;
+    std::uint64_t seed = 0;
+    std::string source;
+    /// The outcome the database stored for the sample, to confirm the replay.
+    std::optional<engine::RockOutcome> stored;
+};
+
+Job job_from_database(const SimulateArgs& args) {
+    if (args.sample < 0)
+        throw std::invalid_argument("--from " + args.from + " needs --sample INDEX (0-based)");
+    const db::ResultsDb results = db::ResultsDb::open(args.from, false);
+    std::optional<db::SampleRecord> record = results.sample(args.sample);
+    if (!record)
+        throw std::invalid_argument(args.from + ": --sample " + std::to_string(args.sample) +
+                                    ": no such sample (see rockfall query " + args.from +
+                                    " summary)");
+    const engine::Scenario base =
+        parse_scenario(results.run().scenario_text, args.from + " (stored scenario)");
+    Job job{risk::sample_scenario(base, record->inputs), record->inputs.seed,
+            args.from + " sample " + std::to_string(args.sample), std::move(record->outcome)};
+    return job;
+}
+
+Job job_from_arguments(const SimulateArgs& args) {
+    if (!args.from.empty() && !args.scenario.empty())
+        throw std::invalid_argument("give either a SCENARIO file or --from DB, not both");
+    if (!args.from.empty()) return job_from_database(args);
+    if (args.scenario.empty())
+        throw std::invalid_argument("simulate needs a SCENARIO file or --from DB --sample INDEX");
+    if (args.sample >= 0) throw std::invalid_argument("--sample needs --from DB");
+    return {load_scenario(args.scenario).scenario, args.seed, args.scenario, std::nullopt};
+}
 
 /// Trajectory rows as CSV, committed only when the run completed.
 class TrajectoryCsv {
@@ -51,7 +91,7 @@ class TrajectoryCsv {
 };
 
 void run_simulate(const SimulateArgs& args) {
-    const ScenarioFile file = load_scenario(args.scenario);
+    const Job job = job_from_arguments(args);
     engine::RunOptions options;
     std::unique_ptr<TrajectoryCsv> csv;
     if (!args.trajectory.empty()) {
@@ -60,15 +100,26 @@ void run_simulate(const SimulateArgs& args) {
         options.trajectory_interval = args.trajectory_interval;
     }
     const auto start = std::chrono::steady_clock::now();
-    const engine::Outcome outcome = engine::simulate(file.scenario, args.seed, options);
+    const engine::Outcome outcome = engine::simulate(job.scenario, job.seed, options);
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
     if (csv) csv->commit();
 
-    const RunInfo info{args.scenario, args.seed, elapsed.count()};
+    const RunInfo info{job.source, job.seed, elapsed.count()};
+    // A replay must reproduce the stored outcome bit for bit (same binary); say so either way.
+    const bool replay_matches =
+        !job.stored || (job.stored->reach == outcome.rocks[0].reach &&
+                        job.stored->stop_time == outcome.rocks[0].stop_time);
     if (args.json) {
-        std::cout << outcome_json(file.scenario, outcome, info).dump(2) << '\n';
+        nlohmann::json json = outcome_json(job.scenario, outcome, info);
+        if (job.stored) json["replay_matches_database"] = replay_matches;
+        std::cout << json.dump(2) << '\n';
     } else {
-        print_summary(std::cout, file.scenario, outcome, info);
+        print_summary(std::cout, job.scenario, outcome, info);
+        if (job.stored)
+            std::cout << (replay_matches
+                              ? "replay matches the database's stored outcome\n"
+                              : "replay differs from the stored outcome (another build or "
+                                "platform made the database)\n");
         if (!args.trajectory.empty())
             std::cout << "trajectory written to " << args.trajectory << '\n';
     }
@@ -80,8 +131,7 @@ void register_simulate(CLI::App& app) {
     auto args = std::make_shared<SimulateArgs>();
     CLI::App* cmd = app.add_subcommand(
         "simulate", "Run one release of a scenario and print reach, stations and wall hits");
-    cmd->add_option("scenario", args->scenario, "Scenario file (TOML)")
-        ->required()
+    cmd->add_option("scenario", args->scenario, "Scenario file (TOML); not with --from")
         ->check(CLI::ExistingFile);
     cmd->add_option("--seed", args->seed,
                     "Seed for random orientations and shapes (same seed, same result)")
@@ -93,6 +143,10 @@ void register_simulate(CLI::App& app) {
                     "Time between trajectory rows, s")
         ->check(CLI::Range(1e-5, 10.0))
         ->capture_default_str();
+    cmd->add_option("--from", args->from, "Replay one sample of a sweep: its results database ...")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--sample", args->sample, "... and the sample's index (0-based)")
+        ->check(CLI::NonNegativeNumber);
     cmd->callback([args] { run_simulate(*args); });
 }
 

@@ -9,6 +9,8 @@ namespace rockfall::app {
 inline constexpr int exit_bad_input = 2;
 /// Exit code for a failure while running (I/O, numerics).
 inline constexpr int exit_failure = 1;
+/// Exit code of a run stopped by SIGINT or SIGTERM (128 + SIGINT, the shell's convention).
+inline constexpr int exit_interrupted = 130;
 
 /// `rockfall simulate SCENARIO`: one release with a readable summary or JSON.
 void register_simulate(CLI::App& app);
@@ -36,5 +38,8 @@ void register_shape(CLI::App& app);
 /// `rockfall query DB WHAT`: summary, percentiles, exceedance probabilities and the worst
 /// samples of a results database, as text, CSV or JSON.
 void register_query(CLI::App& app);
+
+/// `rockfall sweep SCENARIO --db FILE`: a Monte Carlo sweep into a results database.
+void register_sweep(CLI::App& app);
 
 }  // namespace rockfall::app

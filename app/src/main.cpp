@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("rockfall ") + ROCKFALL_VERSION);
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Print help for every subcommand");
+    rockfall::app::register_sweep(app);
     rockfall::app::register_simulate(app);
     rockfall::app::register_soil(app);
     rockfall::app::register_formula(app);
@@ -28,6 +29,9 @@ int main(int argc, char** argv) {
     rockfall::app::register_query(app);
     try {
         app.parse(argc, argv);
+    } catch (const CLI::RuntimeError& e) {
+        // A subcommand's own exit code (an interrupted sweep), its message already printed.
+        return e.get_exit_code();
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? 0 : rockfall::app::exit_bad_input;

@@ -1,0 +1,41 @@
+#pragma once
+/// What a sweep writes about itself into its results database: the spec as JSON, the hash
+/// that ties a database to its scenario and settings (checked by --resume), the run record.
+
+#include "app/scenario_file.hpp"
+#include "db/results_db.hpp"
+#include "risk/sampling.hpp"
+#include "risk/sweep_runner.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+
+namespace rockfall::app {
+
+/// Everything that decides a sweep's results and stopping point: the scenario text (with its
+/// [sweep] table), the command line's overrides of it and the --until rule.
+struct SweepIdentity {
+    std::string scenario_text;
+    nlohmann::json overrides;
+    std::string stop_rule;
+};
+
+/// 64-bit FNV-1a hash (Fowler, Noll and Vo; not cryptographic: it detects a changed scenario,
+/// it does not authenticate one) of the identity, as 16 hex digits.
+std::string identity_hash(const SweepIdentity& identity);
+
+/// Now, UTC, ISO 8601 to the second ("2026-11-22T10:31:02Z").
+std::string utc_now();
+
+/// The run record of a new sweep database.
+db::RunRecord make_run_record(const ScenarioFile& file, const risk::SweepSpec& spec,
+                              const std::string& stop_rule, const nlohmann::json& settings);
+
+/// Throws std::invalid_argument naming the database and what differs when `run` was not made
+/// from the same scenario, spec and stop rule (--resume with other settings).
+void check_resumable(const db::RunRecord& run, const db::RunRecord& wanted,
+                     const std::string& db_path);
+
+}  // namespace rockfall::app
