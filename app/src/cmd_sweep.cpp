@@ -113,16 +113,12 @@ risk::SweepSpec effective_spec(const ScenarioFile& file, const SweepArgs& args) 
 // Success flags of the samples already stored, for the --until rule after --resume.
 void replay_stored(const db::ResultsDb& results, const risk::UntilRule& rule,
                    risk::UntilMonitor& monitor) {
-    sqlite3_stmt* statement = nullptr;
-    sqlite3_prepare_v2(results.handle(), "SELECT sample, reach_m, wall_hits FROM outcomes", -1,
-                       &statement, nullptr);
-    while (sqlite3_step(statement) == SQLITE_ROW) {
+    for (const db::StoredOutcome& stored : db::stored_outcomes(results)) {
         engine::RockOutcome outcome;
-        outcome.reach = sqlite3_column_double(statement, 1);
-        outcome.wall_hits.resize(static_cast<std::size_t>(sqlite3_column_int64(statement, 2)));
-        monitor.add(sqlite3_column_int64(statement, 0), rule.success(outcome));
+        outcome.reach = stored.reach;
+        outcome.wall_hits.resize(static_cast<std::size_t>(stored.wall_hits));
+        monitor.add(stored.sample, rule.success(outcome));
     }
-    sqlite3_finalize(statement);
 }
 
 db::SampleRecord to_record(risk::SampleResult&& result) {
