@@ -197,8 +197,15 @@ ScenarioFile file_from(std::string text, const std::string& source, const fs::pa
     loaded.scenario = parsed.scenario;
     loaded.sweep = parsed.sweep;
     loaded.has_sweep = parsed.has_sweep;
-    if (parsed.extended) {
-        loaded.text = "# " + source + " with its extends resolved: every key written out.\n" +
+    // The text must stand alone (results databases keep it): resolve what refers to other
+    // files, base scenarios and mesh files, by writing every key out (meshes as vertices).
+    const bool refers_to_files =
+        std::any_of(loaded.scenario.rocks.begin(), loaded.scenario.rocks.end(),
+                    [](const engine::RockRelease& rock) { return rock.rock.shape != nullptr; });
+    if (parsed.extended || refers_to_files) {
+        loaded.text = "# " + source +
+                      " with its base scenarios and meshes resolved: every key "
+                      "written out.\n" +
                       format_scenario(loaded.scenario);
         if (parsed.has_sweep) loaded.text += "\n" + detail::format_sweep(parsed.sweep);
     }

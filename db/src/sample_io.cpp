@@ -10,7 +10,7 @@ namespace rockfall::db {
 namespace {
 
 constexpr std::array rock_kinds = {shapes::RockKind::sphere, shapes::RockKind::massive,
-                                   shapes::RockKind::planar};
+                                   shapes::RockKind::planar, shapes::RockKind::custom};
 constexpr std::array stop_reasons = {engine::StopReason::at_rest, engine::StopReason::left_domain,
                                      engine::StopReason::time_limit,
                                      engine::StopReason::numerical_failure};
