@@ -182,7 +182,11 @@ int run_sweep(const SweepArgs& args) {
     risk::RunnerOptions options;
     options.threads = threads;
     options.trajectory_interval = args.trajectory_interval;
-    risk::SweepRunner runner(spec, file.scenario, pending, options);
+    // Samples run on the scenario as the database stores it (parsed back from its text), so
+    // that `simulate --from` replays them bit for bit: a mesh rock's hull read back from
+    // stored vertices may list them in another order than the mesh file gave them.
+    const engine::Scenario base = parse_scenario(file.text, file.path.string());
+    risk::SweepRunner runner(spec, base, pending, options);
     std::vector<db::SampleRecord> batch;
     auto last_write = std::chrono::steady_clock::now();
     const auto note = [&] {
