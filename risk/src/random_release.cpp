@@ -61,6 +61,7 @@ engine::Scenario random_rock_scenario(const engine::Scenario& base, std::uint64_
     std::mt19937_64 generator = make_generator(seed);
     engine::RockRelease rock = base.rocks.front();
     rock.rock.kind = ranges.kinds[uniform_index(generator, ranges.kinds.size())];
+    rock.rock.shape = nullptr;  // the drawn family replaces any mesh shape of the base rock
     rock.rock.size = uniform(generator, ranges.min_size, ranges.max_size);
 
     const double radius = shapes::make_rock(rock.rock.kind, rock.rock.size).bounding_radius;
