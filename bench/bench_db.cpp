@@ -20,6 +20,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <sys/resource.h>
 #include <thread>
@@ -68,6 +69,12 @@ Timing best_time(int repeats, const std::function<void()>& work) {
         best.cpu = std::min(best.cpu, cpu_seconds() - cpu_start);
     }
     return best;
+}
+
+std::string number(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
 }
 
 std::string cpu_model() {
@@ -182,8 +189,7 @@ void time_queries(const Args& args, const fs::path& path) {
                     db::exceedance(database, c.quantity, threshold, {c.by, {}}, method);
                 probability = table.groups.front().probability;
             });
-            print_row(std::string(db::to_string(c.quantity)) +
-                          " >= " + std::to_string(threshold).substr(0, 6) + " by " +
+            print_row(std::string(db::to_string(c.quantity)) + " >= " + number(threshold) + " by " +
                           std::string(db::to_string(c.by)) + ", " +
                           std::string(db::to_string(method)),
                       t);
