@@ -31,8 +31,6 @@ std::vector<Cell> group_cells(db::GroupBy by, const db::GroupId& id) {
     return {id.label, id.size_min, std::isinf(id.size_max) ? Cell{} : Cell{id.size_max}};
 }
 
-std::string percent(double share) { return fmt("%.3g", 100.0 * share); }
-
 void write(std::ostream& out, QueryFormat format, const std::vector<std::string>& lines,
            nlohmann::ordered_json meta, const Table& table) {
     switch (format) {
@@ -86,7 +84,7 @@ void write_percentiles(std::ostream& out, QueryFormat format, const std::string&
     const std::string interval = "distribution-free (binomial order statistics)";
     std::vector<std::string> lines = {database + ": percentiles of " + name + " (" + unit +
                                           ") over the " + population_of(table.quantity),
-                                      percent(table.confidence) +
+                                      percent_text(table.confidence) +
                                           " % confidence intervals: " + interval +
                                           "; - where the sample is too small for a bound"};
     for (const db::PercentileGroup& group : table.groups) {
@@ -130,7 +128,7 @@ void write_exceedance(std::ostream& out, QueryFormat format, const std::string& 
     std::vector<std::string> lines = {
         database + ": probability that " + name + " >= " + fmt("%g", table.threshold) + " " + unit +
             (table.quantity == db::Quantity::reach ? " (horizontal distance past the toe)" : ""),
-        percent(table.confidence) + " % " + method + " interval; " + trials};
+        percent_text(table.confidence) + " % " + method + " interval; " + trials};
     if (table.groups.empty()) lines.emplace_back("no samples stored");
     nlohmann::ordered_json meta = {{"database", database},
                                    {"query", "exceed"},

@@ -16,14 +16,12 @@ struct Item {
     double upper = std::nan("");
 };
 
-std::string percent(double share) { return fmt("%.3g", 100.0 * share); }
-
 std::string share_text(const db::Share& s, const std::string& confidence) {
     if (s.trials == 0) return "no samples";
     return std::to_string(s.count) + " of " + std::to_string(s.trials) + ", " +
-           percent(static_cast<double>(s.count) / static_cast<double>(s.trials)) + " % (" +
-           confidence + " % CI " + percent(s.interval.lower) + " to " + percent(s.interval.upper) +
-           " %)";
+           percent_text(static_cast<double>(s.count) / static_cast<double>(s.trials)) + " % (" +
+           confidence + " % CI " + percent_text(s.interval.lower) + " to " +
+           percent_text(s.interval.upper) + " %)";
 }
 
 double share_value(const db::Share& s) {
@@ -99,7 +97,7 @@ void print_load(std::ostream& out, const db::PercentileTable& table, const std::
 
 void print_summary_text(std::ostream& out, const std::string& database, const db::Summary& s) {
     const db::RunRecord& run = s.run;
-    const std::string confidence = percent(s.confidence);
+    const std::string confidence = percent_text(s.confidence);
     out << "database: " << database << '\n'
         << "scenario: " << run.scenario_name << " (hash " << run.scenario_hash << ")\n"
         << "run: seed " << run.seed << ", " << run.method << ", " << s.samples << " of "
@@ -115,7 +113,7 @@ void print_summary_text(std::ostream& out, const std::string& database, const db
     out << "stop reasons:";
     for (const auto& [reason, count] : s.stop_reasons) {
         out << (reason == s.stop_reasons.front().first ? " " : ", ") << reason << ' ' << count
-            << " (" << percent(static_cast<double>(count) / static_cast<double>(s.samples))
+            << " (" << percent_text(static_cast<double>(count) / static_cast<double>(s.samples))
             << " %)";
     }
     out << '\n';
@@ -135,19 +133,14 @@ void print_summary_text(std::ostream& out, const std::string& database, const db
     print_load(out, s.impact_energy, "impact energy", confidence);
 }
 
-// A number, or null for NaN (a missing value or bound).
-nlohmann::ordered_json number(double value) {
-    return std::isnan(value) ? nlohmann::ordered_json() : nlohmann::ordered_json(value);
-}
-
 nlohmann::ordered_json percentiles_json(const db::PercentileTable& table) {
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     if (table.groups.empty()) return rows;
     for (const db::PercentileRow& row : table.groups[0].rows) {
         rows.push_back({{"percentile", 100.0 * row.p},
                         {"value", row.value},
-                        {"ci_lower", number(row.lower)},
-                        {"ci_upper", number(row.upper)}});
+                        {"ci_lower", json_number(row.lower)},
+                        {"ci_upper", json_number(row.upper)}});
     }
     return rows;
 }
@@ -155,7 +148,7 @@ nlohmann::ordered_json percentiles_json(const db::PercentileTable& table) {
 nlohmann::ordered_json share_json(const db::Share& s) {
     return {{"samples", s.count},
             {"of", s.trials},
-            {"share", number(share_value(s))},
+            {"share", json_number(share_value(s))},
             {"ci_lower", s.interval.lower},
             {"ci_upper", s.interval.upper}};
 }
@@ -174,12 +167,12 @@ nlohmann::ordered_json summary_json(const std::string& database, const db::Summa
     nlohmann::ordered_json reach = {{"median", nullptr},
                                     {"ci_lower", nullptr},
                                     {"ci_upper", nullptr},
-                                    {"max", number(s.max_reach)}};
+                                    {"max", json_number(s.max_reach)}};
     if (!s.reach.groups.empty() && !s.reach.groups[0].rows.empty()) {
         const db::PercentileRow& median = s.reach.groups[0].rows[0];
         reach["median"] = median.value;
-        reach["ci_lower"] = number(median.lower);
-        reach["ci_upper"] = number(median.upper);
+        reach["ci_lower"] = json_number(median.lower);
+        reach["ci_upper"] = json_number(median.upper);
     }
     nlohmann::ordered_json wall = share_json(s.wall);
     wall["impacts"] = s.wall_impacts;

@@ -96,9 +96,7 @@ nlohmann::ordered_json rows_json(const Table& table) {
                     if constexpr (std::is_same_v<T, std::monostate>) {
                         object[table.columns[c]] = nullptr;
                     } else if constexpr (std::is_same_v<T, double>) {
-                        object[table.columns[c]] = std::isfinite(value)
-                                                       ? nlohmann::ordered_json(value)
-                                                       : nlohmann::ordered_json();
+                        object[table.columns[c]] = json_number(value);
                     } else {
                         object[table.columns[c]] = value;
                     }
@@ -115,6 +113,12 @@ std::string unit_suffix(const std::string& unit) {
     std::replace(suffix.begin(), suffix.end(), '/', '_');
     std::replace(suffix.begin(), suffix.end(), ' ', '_');
     return suffix;
+}
+
+std::string percent_text(double share) { return fmt("%.3g", 100.0 * share); }
+
+nlohmann::ordered_json json_number(double value) {
+    return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json();
 }
 
 }  // namespace rockfall::app

@@ -42,4 +42,10 @@ nlohmann::ordered_json rows_json(const Table& table);
 /// A unit as a column-name suffix: "m/s" -> "m_s", "N s" -> "N_s".
 std::string unit_suffix(const std::string& unit);
 
+/// A share in [0, 1] as a percentage with 3 significant digits ("4.5" for 0.045).
+std::string percent_text(double share);
+
+/// A JSON number, or null for NaN or an infinity (a missing value or an open bound).
+nlohmann::ordered_json json_number(double value);
+
 }  // namespace rockfall::app
