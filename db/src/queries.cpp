@@ -166,8 +166,8 @@ class Classifier {
 
   private:
     std::size_t key(std::int64_t value) {
-        // Few groups, and rows arrive in long runs of one group: a linear search from the last
-        // hit is faster than a map.
+        // Few groups (kinds, zones, size classes): a linear search, trying the last hit first,
+        // is faster than a map for a million rows.
         if (last_ < keys_.size() && keys_[last_] == value) return last_;
         for (last_ = 0; last_ < keys_.size(); ++last_) {
             if (keys_[last_] == value) return last_;

@@ -156,7 +156,7 @@ TEST_CASE("groups by kind, zone and size class", "[db][query]") {
     CHECK(sizes[1].id.size_min == 0.2);
     CHECK(sizes[1].id.size_max == 0.4);
     CHECK(std::isinf(sizes[2].id.size_max));
-    // Default: quartiles 0.2004, 0.3003, 0.4002 m rounded to two digits.
+    // Default: quartiles (order statistics 250, 500, 750: 0.2001, 0.3001, 0.4001 m) rounded.
     CHECK(labels_and_counts(read_groups(known_database(), Quantity::reach, {GroupBy::size, {}})) ==
           Counts{{"[0, 0.2)", 249}, {"[0.2, 0.3)", 250}, {"[0.3, 0.4)", 250}, {"[0.4, inf)", 251}});
     // Wall quantity by kind: every kind has 100 of the 300 hits.
