@@ -37,8 +37,6 @@ struct EnvelopeArgs {
 };
 
 constexpr double kilo = 1.0e3;
-constexpr risk::ImpactShape all_shapes[] = {risk::ImpactShape::sphere, risk::ImpactShape::massive,
-                                            risk::ImpactShape::planar};
 
 // One impact compared: the formula's load (N) and the ratio load / formula.
 struct Compared {
@@ -173,7 +171,7 @@ void print_worst(const std::vector<Compared>& compared, const ImpactData& data,
 
 std::string formula_text(const EnvelopeArgs& args) {
     std::string text;
-    for (const risk::ImpactShape shape : all_shapes) {
+    for (const risk::ImpactShape shape : risk::all_impact_shapes) {
         const risk::ImpactCoefficients c = coefficients_for(args, shape);
         text += std::string(text.empty() ? "" : "; ") + std::string(risk::to_string(shape)) +
                 fmt(" alpha %.3g", c.alpha) + fmt(" beta %.3g", c.beta) +
@@ -201,7 +199,7 @@ void run(const EnvelopeArgs& args) {
     if (args.json) {
         nlohmann::json shapes = nlohmann::json::object();
         nlohmann::json worst_list = nlohmann::json::array();
-        for (const risk::ImpactShape shape : all_shapes) {
+        for (const risk::ImpactShape shape : risk::all_impact_shapes) {
             const std::vector<double> ratios = ratios_of(compared, data, shape);
             if (!ratios.empty()) {
                 shapes[std::string(risk::to_string(shape))] =
@@ -231,7 +229,7 @@ void run(const EnvelopeArgs& args) {
               << ")\nformula: " << formula_text(args)
               << "\nratio = peak load / formula for the rock's mass, shape and velocity\n"
               << "all: " << stats_text(all) << '\n';
-    for (const risk::ImpactShape shape : all_shapes) {
+    for (const risk::ImpactShape shape : risk::all_impact_shapes) {
         const std::vector<double> ratios = ratios_of(compared, data, shape);
         if (ratios.empty()) continue;
         std::cout << risk::to_string(shape) << ": "

@@ -36,8 +36,6 @@ struct FitArgs {
 };
 
 constexpr double kilo = 1.0e3;
-constexpr risk::ImpactShape all_shapes[] = {risk::ImpactShape::sphere, risk::ImpactShape::massive,
-                                            risk::ImpactShape::planar};
 
 // Where lambda comes from, as seed 000 did it: identified on the spheres, then held fixed
 // while beta is identified for the other shapes.
@@ -58,7 +56,7 @@ std::vector<risk::ImpactRow> of_shape(const std::vector<risk::ImpactRow>& rows,
 
 std::string shape_counts(const std::vector<risk::ImpactRow>& rows) {
     std::string out;
-    for (const risk::ImpactShape shape : all_shapes) {
+    for (const risk::ImpactShape shape : risk::all_impact_shapes) {
         const std::size_t n = of_shape(rows, shape).size();
         if (n > 0) {
             out += (out.empty() ? "" : ", ") + std::string(risk::to_string(shape)) + ' ' +
@@ -74,7 +72,7 @@ std::vector<Result> identify(const FitArgs& args, const std::vector<risk::Impact
     base.reference_mass = args.mass;
 
     std::vector<risk::ImpactShape> shapes;
-    for (const risk::ImpactShape shape : all_shapes) {
+    for (const risk::ImpactShape shape : risk::all_impact_shapes) {
         if (!of_shape(rows, shape).empty()) shapes.push_back(shape);
     }
     if (args.shape) {

@@ -54,6 +54,10 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
 CsvTable CsvTable::parse(std::string_view text, std::string source) {
     CsvTable table;
     table.source_ = std::move(source);
+    // Spreadsheets often save UTF-8 with a byte-order mark, which would glue onto the first
+    // column's name.
+    constexpr std::string_view bom = "\xEF\xBB\xBF";
+    if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());
     std::size_t line_number = 0;
     std::size_t start = 0;
     while (start < text.size()) {

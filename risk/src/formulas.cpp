@@ -48,8 +48,7 @@ ImpactCoefficients seed_coefficients(ImpactShape shape) {
 }
 
 std::optional<ImpactShape> find_impact_shape(std::string_view name) {
-    for (const ImpactShape shape :
-         {ImpactShape::sphere, ImpactShape::massive, ImpactShape::planar}) {
+    for (const ImpactShape shape : all_impact_shapes) {
         if (name == to_string(shape)) return shape;
     }
     return std::nullopt;

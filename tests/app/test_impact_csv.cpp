@@ -32,6 +32,13 @@ TEST_CASE("CSV table reads a header, skips comments and trims fields", "[app][cs
                       Contains("t.csv:6: column 2 (b) = \"x\": not a finite number"));
     CHECK_THROWS_WITH(t.require("c"),
                       Contains("t.csv:3: missing column c (the header names: a, b)"));
+    // A spreadsheet's byte-order mark and CR LF line ends.
+    const CsvTable excel = CsvTable::parse(
+        "\xEF\xBB\xBF"
+        "a,b\r\n1,2\r\n",
+        "x.csv");
+    CHECK(excel.header() == std::vector<std::string>{"a", "b"});
+    CHECK(excel.number(0, 1) == 2.0);
 }
 
 TEST_CASE("CSV table rejects empty files and ragged rows", "[app][csv]") {

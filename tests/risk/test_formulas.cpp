@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 
@@ -65,10 +66,12 @@ TEST_CASE("seed presets carry the paper's coefficients", "[risk][formulas]") {
 }
 
 TEST_CASE("shape names round-trip", "[risk][formulas]") {
-    for (const ImpactShape shape :
-         {ImpactShape::sphere, ImpactShape::massive, ImpactShape::planar}) {
+    for (const ImpactShape shape : all_impact_shapes) {
         CHECK(parse_impact_shape(to_string(shape)) == shape);
+        CHECK(find_impact_shape(to_string(shape)) == shape);
     }
+    CHECK(std::size(all_impact_shapes) == 3);
+    CHECK_FALSE(find_impact_shape("custom").has_value());
     CHECK_THROWS_WITH(parse_impact_shape("cube"),
                       Contains("cube") && Contains("sphere, massive or planar"));
 }

@@ -4,7 +4,8 @@
 /// columns are ignored; every problem is reported with the file, line and column.
 ///
 /// Format: fields separated by commas and trimmed of blanks; no quoting (no field may contain
-/// a comma); lines that are blank or start with '#' are skipped anywhere in the file.
+/// a comma); lines that are blank or start with '#' are skipped anywhere in the file; a UTF-8
+/// byte-order mark and CR LF line ends are accepted.
 
 #include <cstddef>
 #include <filesystem>

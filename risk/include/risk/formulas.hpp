@@ -36,6 +36,10 @@ enum class ImpactShape {
     planar,
 };
 
+/// Every shape class, in the order above.
+inline constexpr ImpactShape all_impact_shapes[] = {ImpactShape::sphere, ImpactShape::massive,
+                                                    ImpactShape::planar};
+
 /// Coefficients of P = alpha beta 2.108 (m g)^(2/3) lambda^(2/5) H^(3/5).
 struct ImpactCoefficients {
     /// Lame constant of the hit material, in Pa (> 0); the formula uses it in kN/m2.
