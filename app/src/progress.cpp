@@ -76,7 +76,6 @@ void Progress::draw(std::int64_t done, const std::string& note, bool final) {
         // \r and a clear-to-end-of-line escape redraw the line in place.
         out_ << '\r' << bar << line << "\x1b[K";
         if (final) out_ << '\n';
-        drawn_ = true;
     } else {
         out_ << line << '\n';
     }

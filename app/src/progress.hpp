@@ -44,7 +44,6 @@ class Progress {
     std::int64_t already_ = 0;
     std::chrono::steady_clock::time_point start_;
     std::chrono::steady_clock::time_point last_draw_;
-    bool drawn_ = false;
 };
 
 /// A duration as h:mm:ss (or m:ss below an hour).
