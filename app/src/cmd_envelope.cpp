@@ -31,6 +31,7 @@ struct EnvelopeArgs {
     std::optional<double> alpha;
     std::optional<double> beta;
     std::string velocity = "normal";
+    double min_velocity = 0.0;
     int worst = 10;
     double confidence = 0.95;
     bool json = false;
@@ -185,7 +186,9 @@ void run(const EnvelopeArgs& args) {
         throw std::invalid_argument(fmt("--confidence = %g: must be in (0, 1)", args.confidence));
     }
     if (args.worst < 0) throw std::invalid_argument("--worst must be >= 0");
-    const ImpactData data = load_impacts(args.input, parse_hit_velocity(args.velocity));
+    const HitVelocity velocity = parse_hit_velocity(args.velocity);
+    ImpactData data = load_impacts(args.input, velocity);
+    drop_slow(data, args.min_velocity);
     if (data.rows.empty()) {
         throw std::invalid_argument(args.input +
                                     ": no wall hits of a sphere, massive or planar rock to "
@@ -212,6 +215,8 @@ void run(const EnvelopeArgs& args) {
                                     {"velocity", args.velocity},
                                     {"formula", args.formula},
                                     {"skipped", data.skipped},
+                                    {"slow", data.slow},
+                                    {"min_velocity_m_s", args.min_velocity},
                                     {"confidence", args.confidence},
                                     {"all", stats_json(all)},
                                     {"by_shape", shapes},
@@ -220,13 +225,8 @@ void run(const EnvelopeArgs& args) {
                   << '\n';
         return;
     }
-    std::cout << "impacts: " << args.input << " ("
-              << (data.from_database ? "results database, velocity " + args.velocity
-                                     : std::string("CSV"))
-              << (data.skipped ? ", " + std::to_string(data.skipped) +
-                                     " hits of other kinds or without a load left out"
-                               : std::string())
-              << ")\nformula: " << formula_text(args)
+    std::cout << "impacts: " << describe(data, args.input, velocity)
+              << "\nformula: " << formula_text(args)
               << "\nratio = peak load / formula for the rock's mass, shape and velocity\n"
               << "all: " << stats_text(all) << '\n';
     for (const risk::ImpactShape shape : risk::all_impact_shapes) {
@@ -260,6 +260,9 @@ void register_envelope(CLI::App& app) {
                     "Hit velocity the formula gets: normal (to the wall) or total")
         ->capture_default_str()
         ->check(CLI::IsMember({"normal", "total"}));
+    cmd->add_option("--min-velocity", args->min_velocity,
+                    "Leave out impacts slower than this (m/s): resting or pushing contacts")
+        ->capture_default_str();
     cmd->add_option("--worst", args->worst, "Number of worst impacts listed")
         ->capture_default_str();
     cmd->add_option("--confidence", args->confidence, "Confidence of the intervals, in (0, 1)")

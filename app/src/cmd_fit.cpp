@@ -31,6 +31,7 @@ struct FitArgs {
     std::string regression = "power";
     std::optional<double> mass;
     std::optional<std::string> velocity;
+    double min_velocity = 0.0;
     std::optional<std::string> svg;
     bool json = false;
 };
@@ -44,6 +45,15 @@ enum class LambdaSource { identified, given, spheres };
 struct Result {
     ShapeFit fit;
     LambdaSource lambda_source = LambdaSource::identified;
+};
+
+// Fewest rows a shape needs: the scatter has n - 2 degrees of freedom.
+constexpr std::size_t min_rows = 3;
+
+struct Identification {
+    std::vector<Result> results;
+    // Shapes present with fewer than min_rows rows, not fitted, with their row counts.
+    std::vector<std::pair<risk::ImpactShape, std::size_t>> too_few;
 };
 
 std::vector<risk::ImpactRow> of_shape(const std::vector<risk::ImpactRow>& rows,
@@ -66,30 +76,45 @@ std::string shape_counts(const std::vector<risk::ImpactRow>& rows) {
     return out;
 }
 
-std::vector<Result> identify(const FitArgs& args, const std::vector<risk::ImpactRow>& rows) {
+// Every shape with enough rows, or only --shape; shapes with too few rows are listed.
+Identification identify(const FitArgs& args, const std::vector<risk::ImpactRow>& rows) {
     risk::FitOptions base;
     base.form = risk::parse_regression_form(args.regression);
     base.reference_mass = args.mass;
 
+    Identification out;
     std::vector<risk::ImpactShape> shapes;
     for (const risk::ImpactShape shape : risk::all_impact_shapes) {
-        if (!of_shape(rows, shape).empty()) shapes.push_back(shape);
+        const std::size_t n = of_shape(rows, shape).size();
+        if (n >= min_rows) {
+            shapes.push_back(shape);
+        } else if (n > 0) {
+            out.too_few.emplace_back(shape, n);
+        }
     }
     if (args.shape) {
         const risk::ImpactShape wanted = risk::parse_impact_shape(*args.shape);
-        if (of_shape(rows, wanted).empty()) {
-            throw std::invalid_argument(args.input + " has no rows of shape " + *args.shape +
+        const std::size_t n = of_shape(rows, wanted).size();
+        if (n < min_rows) {
+            throw std::invalid_argument(args.input + " has " + std::to_string(n) +
+                                        " rows of shape " + *args.shape + ": a fit needs " +
+                                        std::to_string(min_rows) +
                                         " (it has: " + shape_counts(rows) + ")");
         }
         shapes = {wanted};
+        out.too_few.clear();
+    }
+    if (shapes.empty()) {
+        throw std::invalid_argument(args.input + ": no shape has the " + std::to_string(min_rows) +
+                                    " rows a fit needs (it has: " + shape_counts(rows) + ")");
     }
 
     std::optional<double> sphere_lambda;
     const std::vector<risk::ImpactRow> spheres = of_shape(rows, risk::ImpactShape::sphere);
-    if (!args.lambda && !spheres.empty()) {
+    if (!args.lambda && spheres.size() >= min_rows) {
         sphere_lambda = risk::fit_impacts(spheres, base).coefficients.lambda;
     }
-    std::vector<Result> results;
+    std::vector<Result>& results = out.results;
     for (const risk::ImpactShape shape : shapes) {
         Result result;
         risk::FitOptions options = base;
@@ -105,7 +130,16 @@ std::vector<Result> identify(const FitArgs& args, const std::vector<risk::Impact
         result.fit.fit = risk::fit_impacts(result.fit.rows, options);
         results.push_back(std::move(result));
     }
-    return results;
+    return out;
+}
+
+std::string too_few_text(const Identification& id) {
+    std::string text;
+    for (const auto& [shape, n] : id.too_few) {
+        text += (text.empty() ? "" : ", ") + std::string(risk::to_string(shape)) + ' ' +
+                std::to_string(n);
+    }
+    return text;
 }
 
 const char* lambda_text(LambdaSource source) {
@@ -142,24 +176,18 @@ std::string line_text(const risk::ImpactRegression& r) {
            fmt(" (v in m/s); R^2 = %.3f", r.r_squared) + fmt("; sigma = %.4g kN", r.sigma / kilo);
 }
 
-std::string source_text(const FitArgs& args, const ImpactData& data) {
-    if (!data.from_database) return args.input + " (" + std::to_string(data.rows.size()) + " rows)";
-    return args.input + " (results database: " + std::to_string(data.rows.size()) +
-           " wall hits, velocity " + args.velocity.value_or("normal") +
-           (data.skipped ? ", " + std::to_string(data.skipped) +
-                               " hits of other kinds or without a load left out"
-                         : std::string()) +
-           ")";
+HitVelocity hit_velocity(const FitArgs& args) {
+    return parse_hit_velocity(args.velocity.value_or("normal"));
 }
 
-void print_text(const FitArgs& args, const ImpactData& data, const std::vector<Result>& results) {
-    std::cout << "impacts: " << source_text(args, data) << '\n'
+void print_text(const FitArgs& args, const ImpactData& data, const Identification& id) {
+    std::cout << "impacts: " << describe(data, args.input, hit_velocity(args)) << '\n'
               << "regression: " << args.regression
               << (args.regression == "power"
                       ? ", P = a v^b by least squares on ln P; sigma is the residual sd of ln P"
                       : ", P = a + b v by least squares; sigma is the residual sd of P")
               << '\n';
-    for (const Result& result : results) {
+    for (const Result& result : id.results) {
         const risk::ImpactFit& f = result.fit.fit;
         const risk::ImpactCoefficients& c = f.coefficients;
         const risk::ImpactCoefficients preset = risk::seed_coefficients(result.fit.shape);
@@ -182,13 +210,16 @@ void print_text(const FitArgs& args, const ImpactData& data, const std::vector<R
                   << "  seed 000 preset: lambda " << fmt("%.4g Pa", preset.lambda) << ", alpha "
                   << fmt("%.3g", preset.alpha) << ", beta " << fmt("%.3g", preset.beta) << '\n';
     }
+    if (!id.too_few.empty()) {
+        std::cout << "\nnot fitted, fewer than " << min_rows << " rows: " << too_few_text(id)
+                  << '\n';
+    }
     if (args.svg) std::cout << "\nfigure written to " << *args.svg << '\n';
 }
 
-nlohmann::json to_json(const FitArgs& args, const ImpactData& data,
-                       const std::vector<Result>& results) {
+nlohmann::json to_json(const FitArgs& args, const ImpactData& data, const Identification& id) {
     nlohmann::json fits = nlohmann::json::array();
-    for (const Result& result : results) {
+    for (const Result& result : id.results) {
         const risk::ImpactFit& f = result.fit.fit;
         const risk::ImpactCoefficients preset = risk::seed_coefficients(result.fit.shape);
         const bool power = f.regression.form == risk::RegressionForm::power;
@@ -218,10 +249,15 @@ nlohmann::json to_json(const FitArgs& args, const ImpactData& data,
              {"seed_preset",
               {{"lambda_Pa", preset.lambda}, {"alpha", preset.alpha}, {"beta", preset.beta}}}});
     }
+    nlohmann::json not_fitted = nlohmann::json::object();
+    for (const auto& [shape, n] : id.too_few) not_fitted[std::string(risk::to_string(shape))] = n;
     return {{"input", args.input},
             {"source", data.from_database ? "database" : "csv"},
             {"rows", data.rows.size()},
             {"skipped", data.skipped},
+            {"slow", data.slow},
+            {"min_velocity_m_s", args.min_velocity},
+            {"not_fitted", not_fitted},
             {"velocity", data.from_database ? nlohmann::json(args.velocity.value_or("normal"))
                                             : nlohmann::json(nullptr)},
             {"regression", args.regression},
@@ -230,8 +266,8 @@ nlohmann::json to_json(const FitArgs& args, const ImpactData& data,
 }
 
 void run(const FitArgs& args) {
-    const ImpactData data =
-        load_impacts(args.input, parse_hit_velocity(args.velocity.value_or("normal")));
+    ImpactData data = load_impacts(args.input, hit_velocity(args));
+    drop_slow(data, args.min_velocity);
     if (args.velocity && !data.from_database) {
         throw std::invalid_argument("--velocity applies to a results database, not to " +
                                     args.input + " (a CSV file gives velocity_m_s)");
@@ -241,18 +277,18 @@ void run(const FitArgs& args) {
                                     ": no wall hits of a sphere, massive or planar "
                                     "rock to fit");
     }
-    const std::vector<Result> results = identify(args, data.rows);
+    const Identification id = identify(args, data.rows);
     if (args.svg) {
         std::vector<ShapeFit> fits;
-        for (const Result& r : results) fits.push_back(r.fit);
+        for (const Result& r : id.results) fits.push_back(r.fit);
         const std::string name = std::filesystem::path(args.input).filename().string();
         write_svg(*args.svg, fit_figure(fits, "Peak load against impact velocity: " + name));
     }
     if (args.json) {
-        std::cout << to_json(args, data, results).dump(2) << '\n';
+        std::cout << to_json(args, data, id).dump(2) << '\n';
         return;
     }
-    print_text(args, data, results);
+    print_text(args, data, id);
 }
 
 }  // namespace
@@ -271,6 +307,9 @@ void register_fit(CLI::App& app) {
                     "Database: the hit velocity the formula gets, normal (to the wall, default) "
                     "or total")
         ->check(CLI::IsMember({"normal", "total"}));
+    cmd->add_option("--min-velocity", args->min_velocity,
+                    "Leave out impacts slower than this (m/s): resting or pushing contacts")
+        ->capture_default_str();
     cmd->add_option("--shape", args->shape, "Fit only this shape: sphere, massive or planar");
     cmd->add_option("--lambda", args->lambda,
                     "Hold the Lame constant (Pa) fixed and identify beta; default: identified "

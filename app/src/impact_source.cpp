@@ -54,6 +54,45 @@ ImpactData database_impacts(const std::filesystem::path& path, HitVelocity veloc
     return data;
 }
 
+void drop_slow(ImpactData& data, double min_velocity) {
+    if (!(std::isfinite(min_velocity) && min_velocity >= 0.0)) {
+        throw std::invalid_argument("--min-velocity = " + std::to_string(min_velocity) +
+                                    " m/s: must be finite and >= 0");
+    }
+    ImpactData kept;
+    kept.from_database = data.from_database;
+    kept.skipped = data.skipped;
+    kept.slow = data.slow;
+    for (std::size_t i = 0; i < data.rows.size(); ++i) {
+        if (data.rows[i].velocity < min_velocity) {
+            ++kept.slow;
+            continue;
+        }
+        kept.rows.push_back(data.rows[i]);
+        if (data.from_database) kept.hits.push_back(std::move(data.hits[i]));
+    }
+    data = std::move(kept);
+}
+
+std::string describe(const ImpactData& data, const std::string& input, HitVelocity velocity) {
+    std::string left_out;
+    if (data.skipped > 0) {
+        left_out += std::to_string(data.skipped) +
+                    " of a kind without a shape class or without a positive velocity, load or "
+                    "mass";
+    }
+    if (data.slow > 0) {
+        left_out += (left_out.empty() ? "" : ", ") + std::to_string(data.slow) +
+                    " slower than --min-velocity";
+    }
+    const std::string n = std::to_string(data.rows.size());
+    return input +
+           (data.from_database ? " (results database: " + n + " wall hits, velocity " +
+                                     (velocity == HitVelocity::normal ? "normal" : "total")
+                               : " (" + n + " rows") +
+           (left_out.empty() ? "" : "; left out: " + left_out) + ")";
+}
+
 ImpactData load_impacts(const std::filesystem::path& path, HitVelocity velocity) {
     if (is_sqlite_file(path)) return database_impacts(path, velocity);
     ImpactData data;

@@ -34,6 +34,8 @@ struct ImpactData {
     /// For a database: hits left out because their kind has no shape class of the formula
     /// (not sphere, massive or planar) or they lack a positive velocity, force or mass.
     std::size_t skipped = 0;
+    /// Rows left out as slower than the minimum velocity asked for (drop_slow).
+    std::size_t slow = 0;
 };
 
 /// True when the file starts with the SQLite header ("SQLite format 3").
@@ -44,5 +46,15 @@ ImpactData database_impacts(const std::filesystem::path& path, HitVelocity veloc
 
 /// A results database's impacts, or a CSV file's rows (app/impact_csv.hpp).
 ImpactData load_impacts(const std::filesystem::path& path, HitVelocity velocity);
+
+/// Leaves out the rows (and their hits) slower than `min_velocity` (m/s, finite, >= 0),
+/// counting them in `slow`: a rock pressed against the wall at a few cm/s loads it with its
+/// weight and push, not by an impact the formula describes. Throws std::invalid_argument for
+/// a bad minimum.
+void drop_slow(ImpactData& data, double min_velocity);
+
+/// One line on where the rows come from and what was left out, for the reports:
+/// "FILE (results database: N wall hits, velocity normal; left out: ...)".
+std::string describe(const ImpactData& data, const std::string& input, HitVelocity velocity);
 
 }  // namespace rockfall::app
