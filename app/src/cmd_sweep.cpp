@@ -199,7 +199,11 @@ int run_sweep(const SweepArgs& args) {
         }
         const auto now = std::chrono::steady_clock::now();
         // Batches bound the work lost to a crash (one second) and amortise the commit.
-        if (batch.size() >= 256 || (!batch.empty() && now - last_write > std::chrono::seconds(1))) {
+        // The crash test writes every sample at once, so that it crashes after exactly
+        // --crash-after samples however fast the machine is.
+        const std::size_t batch_limit = args.crash_after >= 0 ? 1 : 256;
+        if (batch.size() >= batch_limit ||
+            (!batch.empty() && now - last_write > std::chrono::seconds(1))) {
             results.write_batch(batch);
             done += static_cast<std::int64_t>(batch.size());
             batch.clear();
