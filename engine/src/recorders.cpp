@@ -2,6 +2,8 @@
 
 #include "release.hpp"
 
+#include "shapes/terrain.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -15,11 +17,13 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 double surface_gap(const shapes::Slope& slope, const shapes::RockGeometry& rock,
                    const BodyState& state) {
-    const Vec3 down = -slope.surface_normal(state.position.x());
+    // The ground is the terrain mesh where the slope has one (shapes::ground_at), else the
+    // profile.
+    const Vec3 down = -shapes::ground_at(slope, state.position.x(), state.position.y()).normal;
     const Vec3 lowest = state.position + extent_along(rock, state.orientation, down) * down;
-    // Height above a straight segment times the cosine of its angle is the normal distance.
-    const double height = lowest.z() - slope.surface_height(lowest.x());
-    return height * slope.surface_normal(lowest.x()).z();
+    // Height above a plane times the cosine of its inclination is the normal distance.
+    const shapes::Ground ground = shapes::ground_at(slope, lowest.x(), lowest.y());
+    return (lowest.z() - ground.height) * ground.normal.z();
 }
 
 RockState rock_state(const BodyState& body, double time, double mass,

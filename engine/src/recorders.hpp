@@ -14,8 +14,9 @@
 
 namespace rockfall::engine {
 
-// Gap between the rock's lowest point and the slope surface (slabs only, not bars), measured
-// along the surface normal under that point, m; negative when it penetrates.
+// Gap between the rock's lowest point and the ground (the slabs' surface or the terrain mesh,
+// not bars), measured along the ground's normal under that point, m; negative when it
+// penetrates.
 double surface_gap(const shapes::Slope& slope, const shapes::RockGeometry& rock,
                    const BodyState& state);
 

@@ -1,5 +1,7 @@
 #include "release.hpp"
 
+#include "shapes/terrain.hpp"
+
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -61,17 +63,24 @@ BodyState release_state(const shapes::Slope& slope, const shapes::RockGeometry& 
     const double u2 = random.uniform();
     const double u3 = random.uniform();
 
-    const Vec3 surface_point = slope.point_at_distance(release.distance);
-    const Eigen::Matrix3d frame = surface_frame(slope, surface_point.x());
-    const Vec3 normal = frame.col(2);
+    const Vec3 profile_point = slope.point_at_distance(release.distance);
+    const Eigen::Matrix3d frame = surface_frame(slope, profile_point.x());
+    Vec3 surface_point = profile_point + release.lateral * Vec3::UnitY();
+    Vec3 normal = frame.col(2);
+    if (slope.spec().terrain) {
+        // On a terrain mesh the rock starts above the mesh, lifted along its normal there.
+        const shapes::Ground ground =
+            shapes::ground_at(slope, surface_point.x(), surface_point.y());
+        surface_point.z() = ground.height;
+        normal = ground.normal;
+    }
 
     BodyState state;
     state.orientation = release.random_orientation
                             ? uniform_rotation(u1, u2, u3)
                             : orientation_in_frame(frame, release.orientation_deg);
     const double depth = extent_along(rock, state.orientation, -normal);
-    state.position =
-        surface_point + release.lateral * Vec3::UnitY() + (release.height + depth) * normal;
+    state.position = surface_point + (release.height + depth) * normal;
     state.velocity = release.velocity;
     state.angular_velocity = release.spin;
     return state;

@@ -1,5 +1,7 @@
 #include "stop_rule.hpp"
 
+#include "shapes/terrain.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -13,6 +15,9 @@ StopRule::StopRule(const Numerics& numerics, const shapes::Slope& slope, double 
     double lowest = slope.profile().front().y();
     for (const Eigen::Vector2d& vertex : slope.profile()) {
         lowest = std::min(lowest, vertex.y());
+    }
+    if (spec.terrain) {
+        lowest = std::min(lowest, spec.terrain->lower().z());
     }
     bottom_z_ = lowest - spec.thickness;
 }
@@ -28,9 +33,10 @@ std::optional<StopReason> StopRule::check(const RockState& state, double dt) {
         return StopReason::numerical_failure;
     }
     if (inside_footprint(p)) {
-        // Below the slab under it, inside the slope's footprint: it went through a solid.
-        const double slab_bottom = slope_.surface_height(p.x()) -
-                                   slope_.spec().thickness / slope_.surface_normal(p.x()).z();
+        // Below the slab under it, inside the slope's footprint: it went through a solid. A
+        // terrain mesh counts as the top of a slab of the slope's thickness.
+        const shapes::Ground ground = shapes::ground_at(slope_, p.x(), p.y());
+        const double slab_bottom = ground.height - slope_.spec().thickness / ground.normal.z();
         if (p.z() < slab_bottom) {
             return StopReason::numerical_failure;
         }

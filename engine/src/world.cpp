@@ -4,6 +4,7 @@
 #include "contact_settings.hpp"
 #include "coulomb_solver.hpp"
 #include "hull_contacts.hpp"
+#include "terrain_shape.hpp"
 
 #include <btBulletDynamicsCommon.h>
 
@@ -69,6 +70,9 @@ struct World::Impl {
     // deque: the material records must keep their addresses (Bullet user pointers).
     std::deque<ContactMaterial> materials;
     std::vector<StaticSolid> statics;
+    // A mesh terrain replaces the slope slabs: its shape is shared with other worlds.
+    std::shared_ptr<const TerrainShape> terrain_shape;
+    std::unique_ptr<btRigidBody> terrain;
     std::vector<RockBody> rocks;
     btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
 
@@ -105,6 +109,9 @@ struct World::Impl {
         for (StaticSolid& solid : statics) {
             world.removeRigidBody(solid.body.get());
         }
+        if (terrain) {
+            world.removeRigidBody(terrain.get());
+        }
     }
 
     // Bullet's default of 16384 broadphase handles is cleared at every world's construction;
@@ -135,7 +142,9 @@ World::World(const Scenario& scenario, const shapes::Slope& slope)
     impl_->world.setForceUpdateAllAabbs(false);
 
     for (const shapes::OrientedBox& box : slope.solids()) {
-        if (box.role == shapes::SurfaceRole::reaction_wall) {
+        const bool replaced_by_terrain =
+            box.role == shapes::SurfaceRole::slope && scenario.slope.terrain != nullptr;
+        if (box.role == shapes::SurfaceRole::reaction_wall || replaced_by_terrain) {
             continue;
         }
         StaticSolid solid;
@@ -148,6 +157,23 @@ World::World(const Scenario& scenario, const shapes::Slope& slope)
         impl_->world.addRigidBody(solid.body.get());
         impl_->statics.push_back(std::move(solid));
     }
+    if (scenario.slope.terrain) {
+        add_terrain(scenario);
+    }
+}
+
+// The terrain takes the slope's material, so its contacts go through the same combination
+// rules, contact threshold and solver as the slabs it replaces.
+void World::add_terrain(const Scenario& scenario) {
+    impl_->terrain_shape = terrain_shape(scenario.slope.terrain);
+    const btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr,
+                                                        &impl_->terrain_shape->shape());
+    impl_->terrain = std::make_unique<btRigidBody>(info);
+    attach_material(*impl_->terrain, scenario.materials.slope, impl_->materials.emplace_back());
+    if (impl_->terrain_shape->corrected()) {
+        enable_internal_edge_correction(*impl_->terrain);
+    }
+    impl_->world.addRigidBody(impl_->terrain.get());
 }
 
 World::~World() = default;

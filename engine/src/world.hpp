@@ -25,7 +25,8 @@ struct BodyState {
 class World {
   public:
     // Static solids: every box of the slope except the reaction wall, whose contact is the
-    // compliant WallContactLaw applied by the caller as an external force.
+    // compliant WallContactLaw applied by the caller as an external force; with a terrain mesh,
+    // the mesh instead of the slope slabs.
     World(const Scenario& scenario, const shapes::Slope& slope);
     ~World();
     World(const World&) = delete;
@@ -49,6 +50,8 @@ class World {
     Vec3 inertia(int rock) const;
 
   private:
+    void add_terrain(const Scenario& scenario);
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -19,20 +19,35 @@ std::string triple(const Vec3& v) {
     return number(v.x()) + " " + number(v.y()) + " " + number(v.z());
 }
 
-}  // namespace
-
-void write_obj(std::ostream& out, const ConvexPolyhedron& hull, std::string_view comment) {
+// The comment's lines as OBJ comment lines.
+void write_comment(std::ostream& out, std::string_view comment) {
     std::string_view rest = comment;
     while (!rest.empty()) {
         const std::size_t end = rest.find('\n');
         out << "# " << rest.substr(0, end) << '\n';
         rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
     }
-    for (const Vec3& v : hull.vertices) out << "v " << triple(v) << '\n';
+}
+
+void write_faces(std::ostream& out, const std::vector<Vec3>& vertices,
+                 const std::vector<std::array<int, 3>>& triangles) {
+    for (const Vec3& v : vertices) out << "v " << triple(v) << '\n';
     // OBJ indices count from 1.
-    for (const auto& [a, b, c] : hull.triangles) {
+    for (const auto& [a, b, c] : triangles) {
         out << "f " << a + 1 << ' ' << b + 1 << ' ' << c + 1 << '\n';
     }
+}
+
+}  // namespace
+
+void write_obj(std::ostream& out, const ConvexPolyhedron& hull, std::string_view comment) {
+    write_comment(out, comment);
+    write_faces(out, hull.vertices, hull.triangles);
+}
+
+void write_obj(std::ostream& out, const TriangleMesh& mesh, std::string_view comment) {
+    write_comment(out, comment);
+    write_faces(out, mesh.vertices, mesh.triangles);
 }
 
 void write_stl(std::ostream& out, const ConvexPolyhedron& hull, std::string_view name) {

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
@@ -60,21 +61,99 @@ Eigen::Matrix4d to_eigen(const aiMatrix4x4& m) {
     return out;
 }
 
-// Vertices of the meshes a node and its children place, through the product of the node
-// transforms from the root (assimp stores each mesh in its node's local frame).
+// Vertices (and, when `triangles` is given, the triangles) of the meshes a node and its
+// children place, through the product of the node transforms from the root (assimp stores each
+// mesh in its node's local frame).
 void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& parent,
-             std::vector<Vec3>& points) {
+             std::vector<Vec3>& points, std::vector<std::array<int, 3>>* triangles) {
     const Eigen::Matrix4d transform = parent * to_eigen(node.mTransformation);
     const Eigen::Affine3d affine(transform);
     for (unsigned i = 0; i < node.mNumMeshes; ++i) {
         const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
+        const auto first = static_cast<int>(points.size());
         for (unsigned k = 0; k < mesh.mNumVertices; ++k) {
             const aiVector3D& v = mesh.mVertices[k];
             points.push_back(affine * Vec3(v.x, v.y, v.z));
         }
+        for (unsigned f = 0; triangles != nullptr && f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            // Points and lines have fewer indices; polygons were triangulated on import.
+            if (face.mNumIndices != 3) continue;
+            triangles->push_back({first + static_cast<int>(face.mIndices[0]),
+                                  first + static_cast<int>(face.mIndices[1]),
+                                  first + static_cast<int>(face.mIndices[2])});
+        }
     }
     for (unsigned i = 0; i < node.mNumChildren; ++i) {
-        collect(scene, *node.mChildren[i], transform, points);
+        collect(scene, *node.mChildren[i], transform, points, triangles);
+    }
+}
+
+bool has_polygons(const aiScene& scene) {
+    for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
+        if ((scene.mMeshes[i]->mPrimitiveTypes & aiPrimitiveType_POLYGON) != 0) return true;
+    }
+    return false;
+}
+
+// Every vertex of a mesh file and, when `triangles` is given, its triangles; the checks of
+// read_mesh_vertices.
+std::vector<Vec3> import_mesh(const fs::path& file, std::vector<std::array<int, 3>>* triangles) {
+    check_readable(file);
+    if (!is_mesh_file(file)) {
+        const std::string extension = file.extension().string();
+        fail(file, "unknown mesh format" +
+                       (extension.empty() ? std::string(" (no file extension)")
+                                          : " '" + extension + "'") +
+                       ": use .obj, .stl, .ply, .off, .gltf or .glb (or another format assimp "
+                       "reads)");
+    }
+    // No post-processing on reading: a hull needs only the vertices, and assimp's steps reject
+    // point clouds (meshes without faces). assimp logs nothing unless a logger is created.
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(file.string(), 0);
+    if (scene == nullptr) {
+        fail(file, "cannot be read as " + lower_extension(file) + ": " + importer.GetErrorString());
+    }
+    // Faces of more than three corners (quads of a survey grid) become triangles; only files
+    // that have such faces go through the step, so point clouds still reach our own checks.
+    if (triangles != nullptr && has_polygons(*scene)) {
+        scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
+        if (scene == nullptr) {
+            fail(file, "cannot be triangulated: " + std::string(importer.GetErrorString()));
+        }
+    }
+    std::vector<Vec3> points;
+    if (scene->mRootNode != nullptr) {
+        collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), points, triangles);
+    }
+    if (points.empty()) fail(file, "contains no vertices (empty mesh)");
+    const auto bad =
+        std::find_if(points.begin(), points.end(), [](const Vec3& p) { return !p.allFinite(); });
+    if (bad != points.end()) {
+        const auto count = std::count_if(points.begin(), points.end(),
+                                         [](const Vec3& p) { return !p.allFinite(); });
+        fail(file, std::to_string(count) + " of " + std::to_string(points.size()) +
+                       " vertices have non-finite coordinates, e.g. " + describe(*bad));
+    }
+    return points;
+}
+
+// Single-precision coordinates far from the origin blur the shape (kMaxOffsetOverExtent).
+void check_precision(const fs::path& file, const std::vector<Vec3>& points) {
+    Eigen::AlignedBox3d box;
+    double offset = 0.0;
+    for (const Vec3& p : points) {
+        box.extend(p);
+        offset = std::max(offset, p.cwiseAbs().maxCoeff());
+    }
+    const double extent = box.diagonal().norm();
+    if (extent > 0.0 && offset > kMaxOffsetOverExtent * extent) {
+        std::ostringstream problem;
+        problem << "the mesh lies " << offset << " from the origin but is only " << extent
+                << " across: single-precision coordinates would blur its shape; move it "
+                   "near the origin";
+        fail(file, problem.str());
     }
 }
 
@@ -121,55 +200,18 @@ bool is_mesh_file(const fs::path& file) {
     return Assimp::Importer().IsExtensionSupported(extension);
 }
 
-std::vector<Vec3> read_mesh_vertices(const fs::path& file) {
-    check_readable(file);
-    if (!is_mesh_file(file)) {
-        const std::string extension = file.extension().string();
-        fail(file, "unknown mesh format" +
-                       (extension.empty() ? std::string(" (no file extension)")
-                                          : " '" + extension + "'") +
-                       ": use .obj, .stl, .ply, .off, .gltf or .glb (or another format assimp "
-                       "reads)");
-    }
-    // No post-processing: the hull needs only the vertices, and assimp's steps reject point
-    // clouds (meshes without faces). assimp logs nothing unless a logger is created.
-    Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(file.string(), 0);
-    if (scene == nullptr) {
-        fail(file, "cannot be read as " + lower_extension(file) + ": " + importer.GetErrorString());
-    }
-    std::vector<Vec3> points;
-    if (scene->mRootNode != nullptr) {
-        collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), points);
-    }
-    if (points.empty()) fail(file, "contains no vertices (empty mesh)");
-    const auto bad =
-        std::find_if(points.begin(), points.end(), [](const Vec3& p) { return !p.allFinite(); });
-    if (bad != points.end()) {
-        const auto count = std::count_if(points.begin(), points.end(),
-                                         [](const Vec3& p) { return !p.allFinite(); });
-        fail(file, std::to_string(count) + " of " + std::to_string(points.size()) +
-                       " vertices have non-finite coordinates, e.g. " + describe(*bad));
-    }
-    return points;
+std::vector<Vec3> read_mesh_vertices(const fs::path& file) { return import_mesh(file, nullptr); }
+
+TriangleMesh read_mesh_triangles(const fs::path& file) {
+    TriangleMesh mesh;
+    mesh.vertices = import_mesh(file, &mesh.triangles);
+    check_precision(file, mesh.vertices);
+    return mesh;
 }
 
 ConvexPolyhedron read_mesh_hull(const fs::path& file, const MeshScaling& scaling) {
     const std::vector<Vec3> points = read_mesh_vertices(file);
-    Eigen::AlignedBox3d box;
-    double offset = 0.0;
-    for (const Vec3& p : points) {
-        box.extend(p);
-        offset = std::max(offset, p.cwiseAbs().maxCoeff());
-    }
-    const double extent = box.diagonal().norm();
-    if (extent > 0.0 && offset > kMaxOffsetOverExtent * extent) {
-        std::ostringstream problem;
-        problem << "the mesh lies " << offset << " from the origin but is only " << extent
-                << " across: single-precision coordinates would blur its shape; move it "
-                   "near the origin";
-        fail(file, problem.str());
-    }
+    check_precision(file, points);
     ConvexPolyhedron hull;
     try {
         hull = convex_hull(points);

@@ -4,6 +4,7 @@
 
 #include "shapes/polyhedron.hpp"
 
+#include <array>
 #include <filesystem>
 #include <iosfwd>
 #include <string>
@@ -24,6 +25,14 @@ struct MeshScaling {
     double long_axis = 0.0;
 };
 
+/// A surface as triangles over shared vertices (a terrain, or any mesh file's faces).
+struct TriangleMesh {
+    /// Vertex positions, m.
+    std::vector<Vec3> vertices;
+    /// Triangles as indices into `vertices`, in the file's winding.
+    std::vector<std::array<int, 3>> triangles;
+};
+
 /// Lower-case file extensions (with the dot) of every format assimp reads, e.g. ".obj".
 std::vector<std::string> mesh_extensions();
 
@@ -35,6 +44,14 @@ bool is_mesh_file(const std::filesystem::path& file);
 /// a file assimp cannot parse, a file without vertices and a non-finite coordinate. assimp
 /// reads coordinates in single precision (Debian builds it with float ai_real).
 std::vector<Vec3> read_mesh_vertices(const std::filesystem::path& file);
+
+/// Every vertex and every triangle of every mesh in the file (node transforms applied;
+/// polygons triangulated by assimp; points and lines dropped; vertices as the file lists them,
+/// so an STL repeats each corner in every triangle that uses it). Throws GeometryError naming the
+/// file for every problem of read_mesh_vertices and a mesh further from the origin than 1000 times
+/// its extent (as read_mesh_hull). A file without triangles is not an error here: what needs them
+/// says so.
+TriangleMesh read_mesh_triangles(const std::filesystem::path& file);
 
 /// The convex hull (Qhull) of a mesh file's vertices, scaled as `scaling` says. Throws
 /// GeometryError naming the file for every problem of read_mesh_vertices, a bad scaling,
@@ -51,6 +68,10 @@ ConvexPolyhedron scaled_hull(const ConvexPolyhedron& hull, const MeshScaling& sc
 /// Writes the hull as Wavefront OBJ: one `v x y z` line per vertex (m, shortest exact
 /// decimal), one `f i j k` line per outward triangle; `comment` (may be several lines) first.
 void write_obj(std::ostream& out, const ConvexPolyhedron& hull, std::string_view comment);
+
+/// Writes a triangle mesh as Wavefront OBJ: `v x y z` lines (m, shortest exact decimal), then
+/// `f i j k` lines in the mesh's winding; `comment` (may be several lines) first.
+void write_obj(std::ostream& out, const TriangleMesh& mesh, std::string_view comment);
 
 /// Writes the hull as ASCII STL named `name`, with each triangle's outward unit normal.
 void write_stl(std::ostream& out, const ConvexPolyhedron& hull, std::string_view name);

@@ -8,10 +8,13 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 namespace rockfall::shapes {
+
+class Terrain;
 
 /// One straight segment of the slope profile.
 struct SlopeSegment {
@@ -68,6 +71,10 @@ struct SlopeSpec {
     SideWalls side_walls;
     AngleBars bars;
     ReactionWall wall;
+    /// A triangle-mesh surface (shapes/terrain.hpp) that replaces the slope slabs for rocks,
+    /// or null. The segments stay the reference profile (toe, stations, bars, walls); shared,
+    /// as sweeps copy the scenario for every sample.
+    std::shared_ptr<const Terrain> terrain;
 };
 
 /// What a static solid is, for materials and for the wall load cell.
