@@ -15,12 +15,16 @@
 ///      (optional damping of v_p);
 ///   5. stress update: sigma co-rotated with the spin W = skew(C_p) (Jaumann rate), then the
 ///      constitutive model with the strain increment sym(C_p) dt; V_p *= det(I + dt C_p).
+/// They run as three parallel passes: each particle block scatters into its own buffer (2);
+/// each grid block is cleared, sums the buffers overlapping it and is updated (1, 2, 3); each
+/// particle block gathers, moves and updates its stresses (4, 5).
 ///
-/// Parallel and deterministic: particles are sorted by particle block (2 cells per axis);
-/// blocks scatter into private 4^Dim node buffers, and blocks of the same colour (2^Dim colours
-/// by block parity) never share nodes, so every node sums its contributions in the same order
-/// whatever the thread count. Reductions run in a fixed order. Results are bitwise identical
-/// for any thread count.
+/// Parallel and deterministic: particles are sorted by particle block (2 cells per axis); every
+/// block scatters into a private 4^Dim node buffer, and each grid node sums the buffers that
+/// write it in the order of their colour (2^Dim colours by block parity; blocks of one colour
+/// never share a node), so every node sums its contributions in the same order whatever the
+/// thread count. Reductions run in a fixed order. Results are bitwise identical for any thread
+/// count.
 
 #include "mpm/boundary.hpp"
 #include "mpm/material.hpp"
@@ -123,11 +127,9 @@ class Solver {
     struct Workspace;
 
     void bin_particles();
-    void clear_grid();
     void particles_to_grid(double dt);
     void update_grid(double dt);
     void grid_to_particles(double dt);
-    void update_stress(double dt);
     void reorder_particles();
 
     SolverSettings settings_;

@@ -1,0 +1,86 @@
+#pragma once
+// The solver's private state shared by its source files: the grid, the particle blocks and the
+// per-step workspace.
+
+#include "grid.hpp"
+#include "kernels.hpp"
+#include "thread_pool.hpp"
+
+#include "mpm/solver.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace rockfall::mpm {
+
+template <int Dim>
+struct Solver<Dim>::Grid : detail::BlockGrid<Dim> {
+    using detail::BlockGrid<Dim>::BlockGrid;
+};
+
+namespace detail {
+
+// A non-empty particle block: the first node it writes (2 b per axis), its range in the sorted
+// order and the slots of the storage blocks it writes (by per-axis offset bits; -1 unused).
+template <int Dim>
+struct ParticleBlock {
+    IVec<Dim> first_node;
+    int begin;
+    int end;
+    std::array<std::int32_t, detail::kColours<Dim>> slots;
+};
+
+// A particle block's buffer overlapping a storage block: which particle block, and which of
+// its storage blocks (offset bits, as ParticleBlock::slots).
+struct Contribution {
+    std::int32_t block;
+    std::int32_t offset_bits;
+};
+
+// Current placement of a hinged body, computed once per step.
+struct PlacedBody {
+    std::vector<shapes::OrientedBox> boxes;
+    detail::Bounds bounds;
+    Vec3 hinge;
+    double angular_velocity;
+};
+
+}  // namespace detail
+
+template <int Dim>
+struct Solver<Dim>::Workspace {
+    IVec<Dim> particle_blocks;
+    std::vector<std::int32_t> key;
+    std::vector<std::int32_t> order;
+    // Per particle block id: its particle count, then the next free place in `order`; zero
+    // between steps.
+    std::vector<std::int32_t> block_cursor;
+    // Ids of the particle blocks holding particles this step, ascending.
+    std::vector<std::int32_t> occupied;
+    std::vector<detail::ParticleBlock<Dim>> blocks;
+    std::array<std::vector<int>, detail::kColours<Dim>> colours;
+    // One scatter buffer per entry of `blocks`.
+    std::vector<detail::LocalNodes<Dim>> buffers;
+    std::vector<std::int32_t> active_slots;
+    std::vector<long> slot_stamp;
+    // Per slot, its index in active_slots (valid for this step's active slots).
+    std::vector<std::int32_t> active_index;
+    // Per active slot the buffers overlapping it, in colour order:
+    // contributions[contribution_start[a], contribution_start[a + 1]).
+    std::vector<std::int32_t> contribution_start;
+    std::vector<detail::Contribution> contributions;
+    std::vector<std::int32_t> contribution_cursor;
+    std::vector<std::array<Vec3, kBoundaryGroups>> slot_impulse;
+    std::vector<detail::Bounds> static_bounds;
+    std::vector<detail::PlacedBody> bodies;
+    Particles<Dim> scratch;
+    // One partial result per task, reduced in task order.
+    std::vector<double> task_max;
+    std::vector<double> task_density;
+    std::vector<int> task_count;
+    std::unique_ptr<detail::ThreadPool> pool;
+};
+
+}  // namespace rockfall::mpm
