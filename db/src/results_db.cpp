@@ -1,11 +1,13 @@
 #include "db/results_db.hpp"
 
+#include "create_file.hpp"
 #include "file_checks.hpp"
 #include "sample_io.hpp"
 #include "schema.hpp"
 #include "sqlite.hpp"
 
 #include <cassert>
+#include <functional>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -112,14 +114,27 @@ void check_integrity(sqlite3* db, const fs::path& path) {
     }
 }
 
-void insert_run(sqlite3* db, const fs::path& path, const RunRecord& run) {
+// The kind a file holds; a name this build does not know means a damaged or foreign file.
+RunKind read_kind(sqlite3* db, const fs::path& path) {
+    sql::Statement select(db, path, "SELECT kind FROM run WHERE id = 1");
+    const std::string name = select.step() ? select.text(0) : std::string();
+    for (const RunKind kind : {RunKind::rock_sweep, RunKind::soil_flow}) {
+        if (name == to_string(kind)) return kind;
+    }
+    throw DatabaseError(path.string() + " holds no run of a kind this build knows (run.kind = '" +
+                            name + "'): the file is damaged or was written by a newer rockfall",
+                        Kind::bad_file);
+}
+
+void insert_run(sqlite3* db, const fs::path& path, const RunRecord& run, RunKind kind) {
     sql::Statement insert(db, path,
                           "INSERT INTO run (id, kind, tool_version, build, scenario_name, "
                           "scenario_text, scenario_hash, seed, method, samples_planned, "
                           "stop_rule, settings_json, started_at, finished_at, status) "
-                          "VALUES (1, 'rock_sweep', ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+                          "VALUES (1, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     sql::Binder binder(insert);
-    binder.text(run.tool_version)
+    binder.text(to_string(kind))
+        .text(run.tool_version)
         .text(run.build)
         .text(run.scenario_name)
         .text(run.scenario_text)
@@ -144,7 +159,8 @@ void insert_run(sqlite3* db, const fs::path& path, const RunRecord& run) {
 }
 
 // Writes the new database into `temporary` (rollback journal, so closing leaves one file).
-void build_database(const fs::path& temporary, const fs::path& path, const RunRecord& run) {
+void build_database(const fs::path& temporary, const fs::path& path, const RunRecord& run,
+                    RunKind kind, const std::function<void(sqlite3*)>& fill) {
     Connection connection;
     open_connection(connection, path, temporary.string(),
                     SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
@@ -155,13 +171,27 @@ void build_database(const fs::path& temporary, const fs::path& path, const RunRe
                   "; PRAGMA user_version = " + std::to_string(schema_version),
               "creating the database");
     sql::exec(db, path, std::string(schema::definition), "creating the tables");
-    insert_run(db, path, run);
+    sql::exec(db, path, std::string(schema::soil_definition), "creating the soil tables");
+    insert_run(db, path, run, kind);
+    if (fill) fill(db);
     transaction.commit();
     const int code = sqlite3_close(connection.release());
     if (code != SQLITE_OK) sql::fail(nullptr, code, path, "closing the new database");
 }
 
 }  // namespace
+
+std::string_view to_string(RunKind kind) {
+    return kind == RunKind::soil_flow ? "soil_flow" : "rock_sweep";
+}
+
+void create_database_file(const fs::path& path, const RunRecord& run, RunKind kind,
+                          const std::function<void(sqlite3*)>& fill) {
+    require_creatable(path);
+    TemporaryFile temporary(path);
+    build_database(temporary.path(), path, run, kind, fill);
+    publish(temporary, path);
+}
 
 ResultsDb::ResultsDb(sqlite3* db, fs::path path, bool writable)
     : db_(db), path_(std::move(path)), writable_(writable) {}
@@ -191,10 +221,7 @@ ResultsDb::~ResultsDb() {
 }
 
 ResultsDb ResultsDb::create(const fs::path& path, const RunRecord& run) {
-    require_creatable(path);
-    TemporaryFile temporary(path);
-    build_database(temporary.path(), path, run);
-    publish(temporary, path);
+    create_database_file(path, run, RunKind::rock_sweep, {});
     try {
         return open(path, true);
     } catch (...) {
@@ -206,6 +233,14 @@ ResultsDb ResultsDb::create(const fs::path& path, const RunRecord& run) {
 }
 
 ResultsDb ResultsDb::open(const fs::path& path, bool writable) {
+    return open_checked(path, writable, false);
+}
+
+ResultsDb ResultsDb::open_any(const fs::path& path, bool writable) {
+    return open_checked(path, writable, true);
+}
+
+ResultsDb ResultsDb::open_checked(const fs::path& path, bool writable, bool any_kind) {
     require_database_file(path, writable);
     Connection connection;
     if (writable) {
@@ -216,6 +251,14 @@ ResultsDb ResultsDb::open(const fs::path& path, bool writable) {
                         SQLITE_OPEN_READONLY | (immutable ? SQLITE_OPEN_URI : 0));
     }
     check_identity(connection.db, path);
+    // Before the writer's pragmas: a refused file is never changed.
+    if (!any_kind && read_kind(connection.db, path) != RunKind::rock_sweep) {
+        throw DatabaseError(path.string() +
+                                " holds a soil flow (written by `rockfall soil --db`), not a rock "
+                                "sweep: `rockfall query " +
+                                path.string() + " summary` and `history` read it",
+                            Kind::bad_file);
+    }
     if (writable) {
         set_writer_pragmas(connection.db, path);
         // A sweep appends to this file for hours: check it once now rather than fail later.
@@ -228,6 +271,8 @@ ResultsDb ResultsDb::open(const fs::path& path, bool writable) {
     }
     return ResultsDb(connection.release(), path, writable);
 }
+
+RunKind ResultsDb::kind() const { return read_kind(db_, path_); }
 
 RunRecord ResultsDb::run() const {
     sql::Statement select(db_, path_,

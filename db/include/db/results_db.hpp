@@ -21,6 +21,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 struct sqlite3;
@@ -49,6 +50,15 @@ class DatabaseError : public std::runtime_error {
   private:
     Kind kind_;
 };
+
+/// What a results database holds (run.kind).
+enum class RunKind {
+    rock_sweep,  ///< a Monte Carlo sweep of rocks (`rockfall sweep`): samples and their outcomes
+    soil_flow,   ///< one soil flow (`rockfall soil --db`): the soil tables (db/soil_run.hpp)
+};
+
+/// The name stored in run.kind: "rock_sweep" or "soil_flow".
+std::string_view to_string(RunKind kind);
 
 /// The run a database holds (one per file).
 struct RunRecord {
@@ -100,7 +110,11 @@ class ResultsDb {
     /// root) or a file failing SQLite's quick_check (a full read: about 1.5 s CPU for one
     /// million samples). Nothing in the file changes. Read-only opens of a file in a read-only
     /// directory use SQLite's immutable mode, refused when a -wal file holds unmerged samples.
+    /// A database holding a soil flow rather than a rock sweep is refused too (bad_file).
     static ResultsDb open(const std::filesystem::path& path, bool writable);
+
+    /// Opens a database of either kind with the checks of open(); kind() says which it is.
+    static ResultsDb open_any(const std::filesystem::path& path, bool writable);
 
     ResultsDb(ResultsDb&&) noexcept;
     ResultsDb& operator=(ResultsDb&&) noexcept;
@@ -111,6 +125,9 @@ class ResultsDb {
 
     /// The run record.
     RunRecord run() const;
+
+    /// What the database holds.
+    RunKind kind() const;
 
     /// Writes the samples, their outcomes, wall impacts, stations and trajectories in one
     /// transaction: all of them or none. Throws DatabaseError (e.g. disk full) after rolling
@@ -144,6 +161,8 @@ class ResultsDb {
   private:
     struct Statements;
     ResultsDb(sqlite3* db, std::filesystem::path path, bool writable);
+    // open() and open_any(): with `any_kind` false, a soil flow is refused.
+    static ResultsDb open_checked(const std::filesystem::path& path, bool writable, bool any_kind);
     sqlite3* db_ = nullptr;
     std::filesystem::path path_;
     bool writable_ = false;
