@@ -76,7 +76,7 @@ SoilDeposit deposit_of(const Particles<Dim>& p, const shapes::Slope& slope, doub
 
 // Adds the impulse of a step spanning [t0, t1] to the sample bins it overlaps, in proportion
 // to the overlap (bin k covers [k ds, (k + 1) ds]).
-void bin_impulse(std::vector<double>& bins, double ds, double t0, double t1, double impulse) {
+void bin_impulse(std::vector<Vec3>& bins, double ds, double t0, double t1, const Vec3& impulse) {
     const double dt = t1 - t0;
     const int last = static_cast<int>(bins.size()) - 1;
     for (int k = std::clamp(static_cast<int>(t0 / ds), 0, last);
@@ -101,7 +101,7 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
     const double duration = output.duration;
     const double ds = output.sample_interval;
     const int samples = std::max(1, static_cast<int>(std::ceil(duration / ds - 1e-9)));
-    std::vector<double> impulse_bins(static_cast<std::size_t>(samples), 0.0);
+    std::vector<Vec3> impulse_bins(static_cast<std::size_t>(samples), Vec3::Zero());
     int next_sample = 1;
     double next_frame = 0.0;
     auto emit_frames = [&] {
@@ -117,10 +117,11 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
         const double dt = std::min(solver.stable_time_step(), duration - t0);
         const StepReport& report = solver.step(dt);
         const double t1 = solver.time();
-        const double impulse = report.impulse[detail::kWallGroup].x();
+        const Vec3& impulse = report.impulse[detail::kWallGroup];
         outcome.step_time.push_back(t1);
-        outcome.step_wall_force.push_back(impulse / dt);
-        outcome.wall_impulse += impulse;
+        outcome.step_wall_load.push_back(impulse / dt);
+        outcome.step_wall_force.push_back(impulse.x() / dt);
+        outcome.wall_impulse += impulse.x();
         bin_impulse(impulse_bins, ds, t0, t1, impulse);
         if (report.clamped_particles > 0 && outcome.status == SoilStatus::completed) {
             outcome.status = SoilStatus::left_domain;
@@ -148,10 +149,24 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
 
     const std::size_t recorded = outcome.sample_time.size();
     for (std::size_t k = 0; k < recorded; ++k) {
-        outcome.wall_force.push_back(impulse_bins[k] / ds);
+        outcome.wall_load.push_back(impulse_bins[k] / ds);
+        outcome.wall_force.push_back(outcome.wall_load.back().x());
     }
     const int half = static_cast<int>(std::lround(0.5 * output.filter_window / ds));
-    outcome.wall_force_filtered = moving_average(outcome.wall_force, 2 * half + 1);
+    outcome.wall_load_filtered.assign(recorded, Vec3::Zero());
+    for (int axis = 0; axis < 3; ++axis) {
+        std::vector<double> component(recorded);
+        for (std::size_t k = 0; k < recorded; ++k) {
+            component[k] = outcome.wall_load[k][axis];
+        }
+        component = moving_average(component, 2 * half + 1);
+        for (std::size_t k = 0; k < recorded; ++k) {
+            outcome.wall_load_filtered[k][axis] = component[k];
+        }
+    }
+    for (std::size_t k = 0; k < recorded; ++k) {
+        outcome.wall_force_filtered.push_back(outcome.wall_load_filtered[k].x());
+    }
     for (std::size_t k = 0; k < recorded; ++k) {
         if (outcome.wall_force[k] > outcome.peak_wall_force) {
             outcome.peak_wall_force = outcome.wall_force[k];

@@ -93,6 +93,19 @@ TEST_CASE("Quick 2D soil flow loads the wall and heaps against it", "[mpm][soil]
     CHECK_THAT(sampled, WithinRel(o.wall_impulse, 1e-9));
     CHECK(o.peak_wall_force > 0.0);
     CHECK(o.peak_wall_force_filtered <= o.peak_wall_force);
+    // The load vectors: x is the normal load above, nothing acts across a plane-strain section,
+    // and the fixed (no-slip) wall also takes shear along its face.
+    REQUIRE(o.wall_load.size() == o.wall_force.size());
+    REQUIRE(o.wall_load_filtered.size() == o.wall_force.size());
+    REQUIRE(o.step_wall_load.size() == o.step_wall_force.size());
+    double largest_shear = 0.0;
+    for (std::size_t k = 0; k < o.wall_force.size(); ++k) {
+        CHECK(o.wall_load[k].x() == o.wall_force[k]);
+        CHECK(o.wall_load_filtered[k].x() == o.wall_force_filtered[k]);
+        CHECK(o.wall_load[k].y() == 0.0);
+        largest_shear = std::max(largest_shear, std::abs(o.wall_load[k].z()));
+    }
+    CHECK(largest_shear > 0.01 * o.peak_wall_force);
     // The soil stops against the wall.
     const rockfall::shapes::Slope slope(s.slope);
     CHECK(o.deposit.runout_x <= slope.wall_x() + 0.05);

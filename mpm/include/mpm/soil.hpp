@@ -150,6 +150,12 @@ struct SoilOutcome {
     std::vector<double> wall_force;
     /// wall_force smoothed by a centred moving average of output.filter_window, N.
     std::vector<double> wall_force_filtered;
+    /// The wall load as a vector (scene frame: x normal to the wall as wall_force, y across, z
+    /// up; y is 0 in 2D), N: of every step, averaged over each sample interval, and filtered.
+    /// The x components equal step_wall_force, wall_force and wall_force_filtered.
+    std::vector<Vec3> step_wall_load;
+    std::vector<Vec3> wall_load;
+    std::vector<Vec3> wall_load_filtered;
     /// Centre of mass at each sample time (scene frame), m.
     std::vector<Vec3> centre_of_mass;
     /// Front: largest particle x at each sample time, m.
