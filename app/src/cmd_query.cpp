@@ -113,8 +113,10 @@ void add_common(CLI::App* cmd, QueryArgs& args) {
 }
 
 void add_grouping(CLI::App* cmd, QueryArgs& args) {
-    cmd->add_option("--by", args.group, "Break down by shape kind, size class or release zone")
-        ->check(CLI::IsMember({"kind", "size", "zone"}));
+    cmd->add_option("--by", args.group,
+                    "Break down by shape kind, shape (family, named shape or generated), size "
+                    "class or release zone")
+        ->check(CLI::IsMember({"kind", "shape", "size", "zone"}));
     cmd->add_option("--size-classes", args.size_classes,
                     "Size class edges (m), ascending, e.g. 0.2,0.3,0.4; default: quartiles")
         ->delimiter(',');

@@ -50,10 +50,12 @@ Job job_from_database(const SimulateArgs& args) {
         throw std::invalid_argument(args.from + ": --sample " + std::to_string(args.sample) +
                                     ": no such sample (see rockfall query " + args.from +
                                     " summary)");
-    const engine::Scenario base =
-        parse_scenario(results.run().scenario_text, args.from + " (stored scenario)");
-    Job job{risk::sample_scenario(base, record->inputs), record->inputs.seed,
-            args.from + " sample " + std::to_string(args.sample), std::move(record->outcome)};
+    // The stored [sweep] table holds the named shapes a sample may have drawn.
+    const ScenarioFile stored =
+        parse_scenario_file(results.run().scenario_text, args.from + " (stored scenario)");
+    Job job{risk::sample_scenario(stored.sweep, stored.scenario, record->inputs),
+            record->inputs.seed, args.from + " sample " + std::to_string(args.sample),
+            std::move(record->outcome)};
     return job;
 }
 

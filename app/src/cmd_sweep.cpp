@@ -127,7 +127,13 @@ db::SampleRecord to_record(risk::SampleResult&& result) {
 
 int run_sweep(const SweepArgs& args) {
     const ScenarioFile file = load_scenario(args.scenario);
-    const risk::SweepSpec spec = effective_spec(file, args);
+    // Samples run on the scenario and [sweep] table as the database stores them (parsed back
+    // from its text), so that `simulate --from` replays them bit for bit: a mesh rock's or a
+    // named shape's hull read back from stored vertices may list them in another order than
+    // the mesh file gave them.
+    const ScenarioFile as_stored =
+        parse_scenario_file(file.text, file.path.string(), file.path.parent_path());
+    const risk::SweepSpec spec = effective_spec(as_stored, args);
     const std::optional<risk::UntilRule> until = parse_until(args);
     if (until && spec.method == risk::SweepSpec::Method::latin_hypercube)
         throw std::invalid_argument(
@@ -182,11 +188,7 @@ int run_sweep(const SweepArgs& args) {
     risk::RunnerOptions options;
     options.threads = threads;
     options.trajectory_interval = args.trajectory_interval;
-    // Samples run on the scenario as the database stores it (parsed back from its text), so
-    // that `simulate --from` replays them bit for bit: a mesh rock's hull read back from
-    // stored vertices may list them in another order than the mesh file gave them.
-    const engine::Scenario base = parse_scenario(file.text, file.path.string());
-    risk::SweepRunner runner(spec, base, pending, options);
+    risk::SweepRunner runner(spec, as_stored.scenario, pending, options);
     std::vector<db::SampleRecord> batch;
     auto last_write = std::chrono::steady_clock::now();
     const auto note = [&] {

@@ -17,6 +17,8 @@ std::vector<std::string> group_columns(db::GroupBy by) {
             return {};
         case db::GroupBy::kind:
             return {"kind"};
+        case db::GroupBy::shape:
+            return {"shape"};
         case db::GroupBy::zone:
             return {"zone"};
         case db::GroupBy::size:

@@ -48,14 +48,88 @@ std::optional<double> positive_number(TableReader& r, const toml::node* node, st
     return std::nullopt;
 }
 
-// A path written in a scenario file is relative to the file that wrote it (a base file's
-// own folder for keys that came through extends).
-fs::path resolve(const toml::node& node, const std::string& path, Context& context) {
+std::string scaling_key(const shapes::MeshScaling& s) {
+    return "|" + format_number(s.scale) + "|" + format_number(s.size) + "|" +
+           format_number(s.long_axis);
+}
+
+// Loads the shape of the one source given; reports its problems and returns null on failure.
+std::shared_ptr<const shapes::CustomShape> load(TableReader& r, const ShapeKeys& keys,
+                                                shapes::MeshScaling scaling,
+                                                const std::optional<std::string>& name,
+                                                RockShapeCache& cache) {
+    Context& context = r.context();
+    const auto report = [&](const toml::node* node, std::string_view key, const auto& error) {
+        context.report(*node, r.path(key), describe(*node) + ": " + error.what());
+        return nullptr;
+    };
+    const std::string name_key = "|" + name.value_or("");
+    if (keys.mesh != nullptr) {
+        const std::optional<std::string> file = text(r, keys.mesh, "mesh");
+        if (!file) return nullptr;
+        const fs::path path = resolve_path(*keys.mesh, *file, context);
+        const std::string key = "mesh|" + path.string() + scaling_key(scaling) + name_key;
+        if (auto shape = cache.find(key)) return shape;
+        try {
+            return cache.add(
+                key, {name.value_or(path.stem().string()), shapes::read_mesh_hull(path, scaling)});
+        } catch (const shapes::GeometryError& error) {
+            return report(keys.mesh, "mesh", error);
+        }
+    }
+    if (keys.catalogue != nullptr) {
+        const std::optional<std::string> file = text(r, keys.catalogue, "catalogue");
+        if (keys.entry == nullptr) {
+            context.report(
+                *keys.catalogue, r.path("catalogue"),
+                describe(*keys.catalogue) + ": needs entry = \"name\", the catalogue entry to use");
+            return nullptr;
+        }
+        const std::optional<std::string> entry_name = text(r, keys.entry, "entry");
+        if (!file || !entry_name) return nullptr;
+        const fs::path path = resolve_path(*keys.catalogue, *file, context);
+        shapes::CatalogueEntry entry;
+        try {
+            entry = shapes::find_entry(cache.catalogue(path), *entry_name);
+        } catch (const shapes::GeometryError& error) {
+            return report(keys.entry, "entry", error);
+        }
+        // The rock's own size or long axis replaces the entry's; the entry's scale stays.
+        if (scaling.size > 0.0 || scaling.long_axis > 0.0) {
+            entry.scaling.size = scaling.size;
+            entry.scaling.long_axis = scaling.long_axis;
+        }
+        const std::string key = "catalogue|" + path.string() + "|" + *entry_name +
+                                scaling_key(entry.scaling) + name_key;
+        if (auto shape = cache.find(key)) return shape;
+        try {
+            shapes::CustomShape shape = shapes::load_entry(entry);
+            if (name) shape.name = *name;
+            return cache.add(key, std::move(shape));
+        } catch (const shapes::GeometryError& error) {
+            return report(keys.entry, "entry", error);
+        }
+    }
+    const std::optional<std::vector<shapes::Vec3>> cloud = read_vertices(r, *keys.vertices);
+    if (!cloud) return nullptr;
+    try {
+        const shapes::ConvexPolyhedron hull =
+            shapes::scaled_hull(shapes::convex_hull(*cloud), scaling, "vertices");
+        return std::make_shared<const shapes::CustomShape>(
+            shapes::CustomShape{name.value_or("vertices"), hull});
+    } catch (const shapes::GeometryError& error) {
+        return report(keys.vertices, "vertices", error);
+    }
+}
+
+}  // namespace
+
+fs::path resolve_path(const toml::node& node, const std::string& path, Context& context) {
     const fs::path folder = fs::path(node_location(node, context.file).file).parent_path();
     return (folder / path).lexically_normal();
 }
 
-std::optional<std::vector<shapes::Vec3>> points(TableReader& r, const toml::node& node) {
+std::optional<std::vector<shapes::Vec3>> read_vertices(TableReader& r, const toml::node& node) {
     const auto* array = node.as_array();
     std::vector<shapes::Vec3> out;
     for (std::size_t i = 0; array != nullptr && i < array->size(); ++i) {
@@ -80,82 +154,6 @@ std::optional<std::vector<shapes::Vec3>> points(TableReader& r, const toml::node
     }
     return out;
 }
-
-std::string scaling_key(const shapes::MeshScaling& s) {
-    return "|" + format_number(s.scale) + "|" + format_number(s.size) + "|" +
-           format_number(s.long_axis);
-}
-
-// Loads the shape of the one source given; reports its problems and returns null on failure.
-std::shared_ptr<const shapes::CustomShape> load(TableReader& r, const ShapeKeys& keys,
-                                                shapes::MeshScaling scaling,
-                                                const std::optional<std::string>& name,
-                                                RockShapeCache& cache) {
-    Context& context = r.context();
-    const auto report = [&](const toml::node* node, std::string_view key, const auto& error) {
-        context.report(*node, r.path(key), describe(*node) + ": " + error.what());
-        return nullptr;
-    };
-    const std::string name_key = "|" + name.value_or("");
-    if (keys.mesh != nullptr) {
-        const std::optional<std::string> file = text(r, keys.mesh, "mesh");
-        if (!file) return nullptr;
-        const fs::path path = resolve(*keys.mesh, *file, context);
-        const std::string key = "mesh|" + path.string() + scaling_key(scaling) + name_key;
-        if (auto shape = cache.find(key)) return shape;
-        try {
-            return cache.add(
-                key, {name.value_or(path.stem().string()), shapes::read_mesh_hull(path, scaling)});
-        } catch (const shapes::GeometryError& error) {
-            return report(keys.mesh, "mesh", error);
-        }
-    }
-    if (keys.catalogue != nullptr) {
-        const std::optional<std::string> file = text(r, keys.catalogue, "catalogue");
-        if (keys.entry == nullptr) {
-            context.report(
-                *keys.catalogue, r.path("catalogue"),
-                describe(*keys.catalogue) + ": needs entry = \"name\", the catalogue entry to use");
-            return nullptr;
-        }
-        const std::optional<std::string> entry_name = text(r, keys.entry, "entry");
-        if (!file || !entry_name) return nullptr;
-        const fs::path path = resolve(*keys.catalogue, *file, context);
-        shapes::CatalogueEntry entry;
-        try {
-            entry = shapes::find_entry(cache.catalogue(path), *entry_name);
-        } catch (const shapes::GeometryError& error) {
-            return report(keys.entry, "entry", error);
-        }
-        // The rock's own size or long axis replaces the entry's; the entry's scale stays.
-        if (scaling.size > 0.0 || scaling.long_axis > 0.0) {
-            entry.scaling.size = scaling.size;
-            entry.scaling.long_axis = scaling.long_axis;
-        }
-        const std::string key = "catalogue|" + path.string() + "|" + *entry_name +
-                                scaling_key(entry.scaling) + name_key;
-        if (auto shape = cache.find(key)) return shape;
-        try {
-            shapes::CustomShape shape = shapes::load_entry(entry);
-            if (name) shape.name = *name;
-            return cache.add(key, std::move(shape));
-        } catch (const shapes::GeometryError& error) {
-            return report(keys.entry, "entry", error);
-        }
-    }
-    const std::optional<std::vector<shapes::Vec3>> cloud = points(r, *keys.vertices);
-    if (!cloud) return nullptr;
-    try {
-        const shapes::ConvexPolyhedron hull =
-            shapes::scaled_hull(shapes::convex_hull(*cloud), scaling, "vertices");
-        return std::make_shared<const shapes::CustomShape>(
-            shapes::CustomShape{name.value_or("vertices"), hull});
-    } catch (const shapes::GeometryError& error) {
-        return report(keys.vertices, "vertices", error);
-    }
-}
-
-}  // namespace
 
 std::shared_ptr<const shapes::CustomShape> RockShapeCache::find(const std::string& key) const {
     const auto found = shapes_.find(key);

@@ -10,7 +10,9 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace rockfall::app::detail {
 
@@ -30,6 +32,15 @@ class RockShapeCache {
     std::map<std::string, std::shared_ptr<const shapes::CustomShape>> shapes_;
     std::map<std::string, shapes::ShapeCatalogue> catalogues_;
 };
+
+// A path written at `node`, resolved against the folder of the file that wrote it (a base
+// file's own folder for keys that came through extends).
+std::filesystem::path resolve_path(const toml::node& node, const std::string& path,
+                                   Context& context);
+
+// The points of the `vertices` key of r's table, `node` ([[x, y, z], ...], m); reports a
+// malformed value at that key and returns nothing.
+std::optional<std::vector<shapes::Vec3>> read_vertices(TableReader& r, const toml::node& node);
 
 // Reads the custom-shape keys of one [[rocks]] table, after its kind and size. With a shape
 // source (exactly one of mesh, catalogue + entry, vertices) the rock becomes kind custom with

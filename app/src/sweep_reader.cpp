@@ -60,8 +60,39 @@ void read_moments(TableReader& parent, std::string_view family, const toml::node
     r.finish();
 }
 
-// A distribution-valued key: a plain number (fixed) or an inline table naming one family.
-// Keeps `out` unless everything in the value was read.
+// A 64-bit integer key; `min` is the smallest value TOML may give.
+void read_integer(TableReader& r, std::string_view key, std::int64_t& out, std::int64_t min) {
+    const toml::node* node = r.get(key);
+    if (node == nullptr) return;
+    const auto* value = node->as_integer();
+    if (value == nullptr || value->get() < min) {
+        r.context().report(*node, r.path(key),
+                           describe(*node) + ": must be an integer in [" + std::to_string(min) +
+                               ", " + std::to_string(std::numeric_limits<std::int64_t>::max()) +
+                               "]");
+        return;
+    }
+    out = value->get();
+}
+
+void read_release(TableReader& r, risk::SweepSpec& spec) {
+    for (const auto& [key, member, unit] : sweep_release_keys) {
+        read_distribution(r, key, spec.*member, unit);
+    }
+    // Zones start at the base rock's release point (sweep_defaults' single zone).
+    const risk::ReleaseZone start = spec.zones.empty() ? risk::ReleaseZone{} : spec.zones.front();
+    with_table_array(r, "zones", spec.zones, [&](TableReader& z, risk::ReleaseZone& zone) {
+        zone = start;
+        read(z, "name", zone.name);
+        read(z, "weight", zone.weight, "", positive());
+        for (const auto& [key, member, unit] : sweep_zone_keys) {
+            read_distribution(z, key, zone.*member, unit);
+        }
+    });
+}
+
+}  // namespace
+
 void read_distribution(TableReader& parent, std::string_view key, risk::Distribution& out,
                        std::string_view unit) {
     const toml::node* node = parent.get(key);
@@ -140,99 +171,6 @@ void read_distribution(TableReader& parent, std::string_view key, risk::Distribu
     if (context.problems.size() == problems_before) out = d;
 }
 
-// kind = "sphere", or kind = { choice = ["sphere", "planar"], weights = [2, 1] }.
-void read_kinds(TableReader& parent, risk::SweepSpec& spec) {
-    const toml::node* node = parent.get("kind");
-    if (node == nullptr) return;
-    Context& context = parent.context();
-    const std::string path = parent.path("kind");
-    std::string allowed;
-    for (const shapes::RockKind kind : sweep_rock_kinds) {
-        allowed += std::string(allowed.empty() ? "\"" : ", \"") +
-                   std::string(shapes::to_string(kind)) + "\"";
-    }
-    const auto kind_of = [&](const toml::node& item,
-                             const std::string& item_path) -> std::optional<shapes::RockKind> {
-        if (const auto* name = item.as_string()) {
-            for (const shapes::RockKind kind : sweep_rock_kinds) {
-                if (shapes::to_string(kind) == name->get()) return kind;
-            }
-        }
-        context.report(item, item_path,
-                       describe(item) + ": must be one of " + allowed +
-                           " (custom: the base rock's own shape)");
-        return std::nullopt;
-    };
-    if (node->is_string()) {
-        if (const std::optional<shapes::RockKind> kind = kind_of(*node, path)) {
-            spec.kinds = {*kind};
-            spec.kind_weights = {1.0};
-        }
-        return;
-    }
-    const auto* table = node->as_table();
-    if (table == nullptr) {
-        context.report(*node, path,
-                       describe(*node) + ": must be a shape name (" + allowed +
-                           ") or { choice = [names], weights = [numbers] }");
-        return;
-    }
-    const std::size_t problems_before = context.problems.size();
-    TableReader r(*table, path, context);
-    std::vector<shapes::RockKind> kinds;
-    std::vector<double> weights;
-    if (!table->contains("choice")) {
-        context.report(*node, path,
-                       describe(*node) + ": must list the shapes to draw: { choice = [" + allowed +
-                           "], weights = [...] } (weights optional: equal by default)");
-    }
-    read_list(r, "choice", kinds, "shape names", kind_of);
-    const bool weighted = table->contains("weights");
-    read_list(r, "weights", weights, "numbers (relative weights, >= 0)",
-              [&](const toml::node& item, const std::string& item_path) -> std::optional<double> {
-                  if (std::optional<double> value = number_of(item)) return value;
-                  context.report(item, item_path, describe(item) + ": must be a number (>= 0)");
-                  return std::nullopt;
-              });
-    r.finish();
-    if (context.problems.size() != problems_before) return;
-    spec.kinds = std::move(kinds);
-    spec.kind_weights = weighted ? std::move(weights) : std::vector<double>(spec.kinds.size(), 1.0);
-}
-
-// A 64-bit integer key; `min` is the smallest value TOML may give.
-void read_integer(TableReader& r, std::string_view key, std::int64_t& out, std::int64_t min) {
-    const toml::node* node = r.get(key);
-    if (node == nullptr) return;
-    const auto* value = node->as_integer();
-    if (value == nullptr || value->get() < min) {
-        r.context().report(*node, r.path(key),
-                           describe(*node) + ": must be an integer in [" + std::to_string(min) +
-                               ", " + std::to_string(std::numeric_limits<std::int64_t>::max()) +
-                               "]");
-        return;
-    }
-    out = value->get();
-}
-
-void read_release(TableReader& r, risk::SweepSpec& spec) {
-    for (const auto& [key, member, unit] : sweep_release_keys) {
-        read_distribution(r, key, spec.*member, unit);
-    }
-    // Zones start at the base rock's release point (sweep_defaults' single zone).
-    const risk::ReleaseZone start = spec.zones.empty() ? risk::ReleaseZone{} : spec.zones.front();
-    with_table_array(r, "zones", spec.zones, [&](TableReader& z, risk::ReleaseZone& zone) {
-        zone = start;
-        read(z, "name", zone.name);
-        read(z, "weight", zone.weight, "", positive());
-        for (const auto& [key, member, unit] : sweep_zone_keys) {
-            read_distribution(z, key, zone.*member, unit);
-        }
-    });
-}
-
-}  // namespace
-
 void read_sweep(const toml::node& node, risk::SweepSpec& spec, Context& context) {
     const auto* table = node.as_table();
     if (table == nullptr) {
@@ -252,7 +190,7 @@ void read_sweep(const toml::node& node, risk::SweepSpec& spec, Context& context)
     read(r, "random_orientation", spec.random_orientation, "", {});
     read(r, "lateral_margin", spec.lateral_margin, "m", non_negative());
     with_table(r, "rock", [&](TableReader& rock) {
-        read_kinds(rock, spec);
+        read_sweep_shapes(rock, spec);
         for (const auto& [key, member, unit] : sweep_rock_keys) {
             read_distribution(rock, key, spec.*member, unit);
         }

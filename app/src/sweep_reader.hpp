@@ -63,6 +63,18 @@ inline constexpr std::array<shapes::RockKind, 4> sweep_rock_kinds{
     shapes::RockKind::sphere, shapes::RockKind::massive, shapes::RockKind::planar,
     shapes::RockKind::custom};
 
+// A distribution-valued key: a plain number (fixed) or an inline table naming one family.
+// Keeps `out` unless everything in the value was read.
+void read_distribution(TableReader& parent, std::string_view key, risk::Distribution& out,
+                       std::string_view unit);
+
+// The shape keys of [sweep.rock] (sweep_shapes.cpp): kind, a weighted choice of families,
+// "custom" and named shapes; catalogue, a folder or TOML catalogue (relative to the file that
+// writes it) whose entries kind may name; [[sweep.rock.shapes]], named hulls given as
+// vertices; and sphericity, the target sphericity of generated rocks, which replaces the kind
+// draw. Fills spec.kinds, kind_weights, entries, entry_weights and sphericity.
+void read_sweep_shapes(TableReader& rock, risk::SweepSpec& spec);
+
 // Fills `spec` from the [sweep] node. Start `spec` from risk::sweep_defaults(base), so that a key
 // left out keeps the base rock's value. Wrong types and unknown keys go to `context`.
 void read_sweep(const toml::node& node, risk::SweepSpec& spec, Context& context);

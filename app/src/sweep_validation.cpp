@@ -24,7 +24,7 @@ struct Probe {
     // The key of the same input in a one-rock scenario, and how to set it.
     std::string scenario_key;
     std::function<void(engine::RockRelease&, double)> set;
-    // Whether the rules depend on the shape (size only): then every drawn kind is tried.
+    // Whether the rules depend on the shape (size only): then every drawn shape is tried.
     bool per_kind = false;
 };
 
@@ -62,18 +62,6 @@ std::vector<Probe> probes(const risk::SweepSpec& spec) {
     return list;
 }
 
-// The kinds whose rocks the size probe must try: those drawn, that have a shape.
-std::vector<shapes::RockKind> drawn_kinds(const risk::SweepSpec& spec,
-                                          const engine::RockSpec& base_rock) {
-    std::vector<shapes::RockKind> kinds;
-    for (std::size_t i = 0; i < spec.kinds.size() && i < spec.kind_weights.size(); ++i) {
-        const bool has_shape =
-            spec.kinds[i] != shapes::RockKind::custom || base_rock.shape != nullptr;
-        if (spec.kind_weights[i] > 0.0 && has_shape) kinds.push_back(spec.kinds[i]);
-    }
-    return kinds;
-}
-
 }  // namespace
 
 std::vector<ScenarioProblem> find_sweep_problems(const risk::SweepSpec& spec,
@@ -97,19 +85,19 @@ std::vector<ScenarioProblem> find_sweep_problems(const risk::SweepSpec& spec,
         probe_base.rocks = {base.rocks.front()};
         probe_base.rocks.front().release.lateral = 0.0;
         const engine::RockSpec& base_rock = base.rocks.front().rock;
+        const std::vector<risk::DrawableShape> shapes_drawn = risk::drawable_shapes(spec, base);
         for (const Probe& probe : probes(spec)) {
             if (!risk::find_problems(probe.distribution).empty()) continue;
             const risk::Interval support = risk::support(probe.distribution);
-            const std::vector<shapes::RockKind> kinds =
-                probe.per_kind ? drawn_kinds(spec, base_rock)
-                               : std::vector<shapes::RockKind>{base_rock.kind};
+            std::vector<risk::DrawableShape> drawn = {{"", base_rock.kind, base_rock.shape, 0.0}};
+            if (probe.per_kind) drawn = shapes_drawn;
             for (const auto& [end, value] :
                  {std::pair("lower end", support.lower), std::pair("upper end", support.upper)}) {
-                for (const shapes::RockKind kind : kinds) {
+                for (const risk::DrawableShape& shape : drawn) {
                     engine::Scenario probe_scenario = probe_base;
                     engine::RockRelease& rock = probe_scenario.rocks.front();
-                    rock.rock.kind = kind;
-                    if (kind != shapes::RockKind::custom) rock.rock.shape = nullptr;
+                    rock.rock.kind = shape.kind;
+                    rock.rock.shape = shape.shape;
                     probe.set(rock, value);
                     for (const ScenarioProblem& p : find_problems(probe_scenario, nullptr)) {
                         if (p.key == probe.scenario_key) {

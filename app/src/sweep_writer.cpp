@@ -35,16 +35,38 @@ std::string distribution_text(const risk::Distribution& d) {
 }
 
 std::string kind_text(const risk::SweepSpec& spec) {
-    if (spec.kinds.size() == 1) return toml_string(shapes::to_string(spec.kinds.front()));
-    std::string names;
-    std::string weights;
-    for (std::size_t i = 0; i < spec.kinds.size(); ++i) {
-        names += (i == 0 ? "" : ", ") + toml_string(shapes::to_string(spec.kinds[i]));
+    std::vector<std::string> names;
+    std::vector<double> weights = spec.kind_weights;
+    for (const shapes::RockKind kind : spec.kinds) {
+        names.push_back(toml_string(shapes::to_string(kind)));
     }
-    for (std::size_t i = 0; i < spec.kind_weights.size(); ++i) {
-        weights += (i == 0 ? "" : ", ") + format_number(spec.kind_weights[i]);
+    for (const auto& entry : spec.entries) names.push_back(toml_string(entry->name));
+    weights.insert(weights.end(), spec.entry_weights.begin(), spec.entry_weights.end());
+    if (spec.generated_weight > 0.0) {
+        names.push_back(toml_string("generated"));
+        weights.push_back(spec.generated_weight);
     }
-    return "{ choice = [" + names + "], weights = [" + weights + "] }";
+    if (names.size() == 1) return names.front();
+    std::string choice;
+    std::string weight_list;
+    for (std::size_t i = 0; i < names.size(); ++i) choice += (i == 0 ? "" : ", ") + names[i];
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+        weight_list += (i == 0 ? "" : ", ") + format_number(weights[i]);
+    }
+    return "{ choice = [" + choice + "], weights = [" + weight_list + "] }";
+}
+
+// A named shape with its hull, so that the text stands alone (no catalogue to look for), as
+// format_scenario writes mesh rocks. The vertices are written in full precision: read back,
+// they give the same hull, though Qhull may list its vertices in another order (a sweep runs
+// on the spec read back from this text for that reason).
+std::string shape_text(const shapes::CustomShape& shape) {
+    std::string points;
+    for (const shapes::Vec3& v : shape.hull.vertices) {
+        points += "\n    " + format_vector(engine::Vec3(v)) + ",";
+    }
+    return "\n[[sweep.rock.shapes]]\nname = " + toml_string(shape.name) + "\nvertices = [" +
+           points + "\n]\n";
 }
 
 template <class S, std::size_t N>
@@ -73,7 +95,11 @@ std::string format_sweep(const risk::SweepSpec& spec) {
     out << "lateral_margin = " << format_number(spec.lateral_margin) << "\n";
     out << "\n[sweep.rock]\n";
     out << "kind = " << kind_text(spec) << "\n";
+    if (spec.sphericity) {
+        out << "sphericity = " << distribution_text(*spec.sphericity) << "\n";
+    }
     write_distributions(out, spec, sweep_rock_keys);
+    for (const auto& entry : spec.entries) out << shape_text(*entry);
     out << "\n[sweep.rock.material]\n";
     write_distributions(out, spec, sweep_material_keys);
     out << "\n[sweep.release]\n";

@@ -43,7 +43,8 @@ const QuantityInfo& info(Quantity quantity) {
 constexpr std::pair<GroupBy, std::string_view> group_names[] = {{GroupBy::none, "none"},
                                                                 {GroupBy::kind, "kind"},
                                                                 {GroupBy::size, "size"},
-                                                                {GroupBy::zone, "zone"}};
+                                                                {GroupBy::zone, "zone"},
+                                                                {GroupBy::shape, "shape"}};
 
 double round_to_significant(double value, int digits) {
     const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(std::abs(value))));
@@ -89,6 +90,8 @@ class Classifier {
         switch (by_) {
             case GroupBy::kind:
                 return "s.kind";
+            case GroupBy::shape:
+                return "s.shape";
             case GroupBy::size:
                 return "s.size_m";
             case GroupBy::zone:
@@ -111,6 +114,7 @@ class Classifier {
             case GroupBy::none:
                 return key(0);
             case GroupBy::kind:
+            case GroupBy::shape:
                 return kind_index(row.text_view(column));
             case GroupBy::zone:
                 return key(row.integer(column));
@@ -129,7 +133,8 @@ class Classifier {
         std::vector<std::size_t> order(keys_.size());
         for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
         std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            return by_ == GroupBy::kind ? kinds_[a] < kinds_[b] : keys_[a] < keys_[b];
+            return by_ == GroupBy::kind || by_ == GroupBy::shape ? kinds_[a] < kinds_[b]
+                                                                 : keys_[a] < keys_[b];
         });
         return order;
     }
@@ -141,6 +146,7 @@ class Classifier {
                 id.label = "all";
                 break;
             case GroupBy::kind:
+            case GroupBy::shape:
                 id.label = kinds_[index];
                 break;
             case GroupBy::zone: {
@@ -230,7 +236,7 @@ GroupBy parse_group_by(std::string_view name) {
         if (known == name) return value;
     }
     throw std::invalid_argument("unknown grouping '" + std::string(name) +
-                                "': choose kind, size or zone");
+                                "': choose kind, shape, size or zone");
 }
 
 void validate_size_edges(const std::vector<double>& edges) {

@@ -30,6 +30,16 @@ Enum parse_stored(const std::array<Enum, N>& values, const std::string& name,
                         DatabaseError::Kind::bad_file);
 }
 
+// samples.shape: the kind's name for the families; for kind custom, "custom" for the base
+// rock's own shape, else the named shape or "generated" (names risk reserves).
+constexpr std::string_view base_shape = "custom";
+constexpr std::string_view generated_shape = "generated";
+
+std::string shape_text(const risk::SampleInputs& in) {
+    if (in.kind != shapes::RockKind::custom) return std::string(shapes::to_string(in.kind));
+    return in.shape.empty() ? std::string(base_shape) : in.shape;
+}
+
 engine::Vec3 vec3(const sql::Statement& row, int first) {
     return {row.real(first), row.real(first + 1), row.real(first + 2)};
 }
@@ -40,8 +50,9 @@ ResultsDb::Statements::Statements(sqlite3* db, const std::filesystem::path& path
     : sample(db, path,
              "INSERT INTO samples (sample, seed, zone, kind, size_m, density_kg_m3, mass_kg, "
              "friction, restitution, rolling_resistance, release_distance_m, release_lateral_m, "
-             "speed_m_s, spin_rad_s, orientation_x_deg, orientation_y_deg, orientation_z_deg) "
-             "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+             "speed_m_s, spin_rad_s, orientation_x_deg, orientation_y_deg, orientation_z_deg, "
+             "shape, sphericity, target_sphericity, shape_seed) "
+             "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
              true),
       outcome(db, path,
               "INSERT INTO outcomes (sample, stop_reason, stop_time_s, reach_m, final_x_m, "
@@ -76,8 +87,8 @@ void ResultsDb::Statements::write(const SampleRecord& record) {
     const risk::SampleInputs& in = record.inputs;
     const engine::RockOutcome& out = record.outcome;
     const std::int64_t index = in.index;
-    sql::Binder(sample)
-        .integer(index)
+    sql::Binder binder(sample);
+    binder.integer(index)
         .integer(sql::to_stored(in.seed))
         .integer(static_cast<std::int64_t>(in.zone))
         .text(shapes::to_string(in.kind))
@@ -94,7 +105,15 @@ void ResultsDb::Statements::write(const SampleRecord& record) {
         .real(in.orientation_deg.x())
         .real(in.orientation_deg.y())
         .real(in.orientation_deg.z())
-        .run();
+        .text(shape_text(in))
+        .real(in.sphericity);
+    // A generated rock's target and generator seed rebuild its hull (risk::sample_shape).
+    if (in.shape == generated_shape) {
+        binder.real(in.target_sphericity).integer(sql::to_stored(in.shape_seed));
+    } else {
+        binder.null().null();
+    }
+    binder.run();
 
     const engine::RockState& final_state = out.final_state;
     sql::Binder(outcome)
@@ -202,7 +221,8 @@ std::optional<SampleRecord> read_sample(sqlite3* db, const std::filesystem::path
                           "SELECT seed, zone, kind, size_m, density_kg_m3, mass_kg, friction, "
                           "restitution, rolling_resistance, release_distance_m, "
                           "release_lateral_m, speed_m_s, spin_rad_s, orientation_x_deg, "
-                          "orientation_y_deg, orientation_z_deg FROM samples WHERE sample = ?");
+                          "orientation_y_deg, orientation_z_deg, shape, sphericity, "
+                          "target_sphericity, shape_seed FROM samples WHERE sample = ?");
     inputs.bind_int(1, index);
     if (!inputs.step()) return std::nullopt;
     SampleRecord record;
@@ -220,6 +240,15 @@ std::optional<SampleRecord> read_sample(sqlite3* db, const std::filesystem::path
     in.speed = inputs.real(11);
     in.spin = inputs.real(12);
     in.orientation_deg = vec3(inputs, 13);
+    if (in.kind == shapes::RockKind::custom) {
+        const std::string shape = inputs.text(16);
+        in.shape = shape == base_shape ? std::string() : shape;
+    }
+    in.sphericity = inputs.real(17);
+    if (in.shape == generated_shape) {
+        in.target_sphericity = inputs.real(18);
+        in.shape_seed = sql::from_stored(inputs.integer(19));
+    }
 
     sql::Statement outcome(db, path,
                            "SELECT stop_reason, stop_time_s, reach_m, final_x_m, final_y_m, "

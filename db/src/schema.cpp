@@ -32,7 +32,7 @@ CREATE TABLE samples (
     sample INTEGER PRIMARY KEY CHECK (sample >= 0),  -- 0-based sample index
     seed INTEGER NOT NULL,                  -- engine seed (uint64 as int64 bit pattern)
     zone INTEGER NOT NULL REFERENCES zones,
-    kind TEXT NOT NULL,                     -- sphere, massive, planar
+    kind TEXT NOT NULL,                     -- sphere, massive, planar, custom
     size_m REAL,                            -- nominal (volume-equivalent) diameter
     density_kg_m3 REAL,
     mass_kg REAL,
@@ -45,7 +45,14 @@ CREATE TABLE samples (
     spin_rad_s REAL,                        -- initial spin about the across-slope axis
     orientation_x_deg REAL,
     orientation_y_deg REAL,
-    orientation_z_deg REAL
+    orientation_z_deg REAL,
+    shape TEXT NOT NULL,                    -- the kind, or for custom: custom (the base rock's
+                                            -- own shape), a named shape (catalogue entry) or
+                                            -- generated (a rock of target sphericity)
+    sphericity REAL,                        -- Wadell sphericity of the rock simulated
+    target_sphericity REAL,                 -- generated rocks: the target drawn, else NULL
+    shape_seed INTEGER                      -- generated rocks: generator seed (uint64 as int64
+                                            -- bit pattern), else NULL
 );
 
 CREATE TABLE outcomes (
@@ -147,13 +154,14 @@ SELECT s.*, z.name AS zone_name, o.stop_reason, o.stop_time_s, o.reach_m, o.fina
 FROM samples s JOIN outcomes o ON o.sample = s.sample LEFT JOIN zones z ON z.zone = s.zone;
 
 CREATE VIEW impact_results AS
-SELECT w.*, s.seed, s.kind, s.size_m, s.mass_kg, s.zone, z.name AS zone_name
+SELECT w.*, s.seed, s.kind, s.size_m, s.mass_kg, s.zone, z.name AS zone_name, s.shape,
+       s.sphericity
 FROM wall_impacts w JOIN samples s ON s.sample = w.sample LEFT JOIN zones z ON z.zone = s.zone;
 
 CREATE VIEW sample_impacts AS
 SELECT m.sample, s.seed, s.kind, s.size_m, s.mass_kg, s.zone, z.name AS zone_name, m.hits,
        m.peak_force_N, m.normal_impulse_N_s, m.energy_before_J, m.impact_speed_m_s,
-       m.normal_speed_m_s
+       m.normal_speed_m_s, s.shape, s.sphericity
 FROM (SELECT sample, COUNT(*) AS hits, MAX(peak_force_N) AS peak_force_N,
              MAX(normal_impulse_N_s) AS normal_impulse_N_s,
              MAX(energy_before_J) AS energy_before_J, MAX(impact_speed_m_s) AS impact_speed_m_s,

@@ -1,6 +1,7 @@
 #include "risk/sampling.hpp"
 
 #include "number_text.hpp"
+#include "sample_shapes.hpp"
 
 #include "risk/random_release.hpp"
 #include "shapes/slope.hpp"
@@ -30,12 +31,13 @@ enum Coordinate : std::size_t {
     speed_coordinate,
     spin_coordinate,
     orientation_coordinate,  // and the two after it
+    sphericity_coordinate = orientation_coordinate + 3,
 };
-static_assert(orientation_coordinate + 3 == sample_dimensions);
+static_assert(sphericity_coordinate + 1 == sample_dimensions);
 
-// Independent streams of one run seed: the uniforms of the samples, the engine seeds and the
-// Latin hypercube permutation keys must not share hash inputs.
-enum class Stream : std::uint64_t { draws = 1, engine = 2, permutation = 3 };
+// Independent streams of one run seed: the uniforms of the samples, the engine seeds, the
+// Latin hypercube permutation keys and the seeds of generated rocks must not share hash inputs.
+enum class Stream : std::uint64_t { draws = 1, engine = 2, permutation = 3, shape = 4 };
 
 std::uint64_t hash(std::uint64_t seed, Stream stream, std::uint64_t index) {
     return splitmix64(splitmix64(splitmix64(seed) ^ static_cast<std::uint64_t>(stream)) + index);
@@ -79,19 +81,6 @@ double uniform_open01(std::mt19937_64& generator) {
     return (static_cast<double>(generator() >> 12) + 0.5) * two_to_minus_52;
 }
 
-// The rock a sample of this kind and size runs: a family, or the base rock's custom shape.
-engine::RockSpec rock_of(const engine::Scenario& base, shapes::RockKind kind, double size) {
-    engine::RockSpec rock = base.rocks.front().rock;
-    rock.kind = kind;
-    rock.size = size;
-    if (kind != shapes::RockKind::custom) rock.shape = nullptr;
-    return rock;
-}
-
-bool lacks_shape(const engine::Scenario& base, shapes::RockKind kind) {
-    return kind == shapes::RockKind::custom && base.rocks.front().rock.shape == nullptr;
-}
-
 std::string vector_text(const engine::Vec3& v) {
     return "[" + number_text(v.x()) + ", " + number_text(v.y()) + ", " + number_text(v.z()) + "]";
 }
@@ -103,42 +92,6 @@ bool check_distribution(std::vector<SweepProblem>& problems, const std::string& 
     const std::string value = describe(d) + (unit.empty() ? "" : " " + unit);
     for (const std::string& rule : rules) problems.push_back({key, value + ": " + rule});
     return rules.empty();
-}
-
-void check_kinds(std::vector<SweepProblem>& problems, const SweepSpec& spec,
-                 const engine::Scenario& base) {
-    const std::string key = "sweep.rock.kind";
-    if (spec.kinds.empty()) {
-        problems.push_back({key, "[]: must name at least one shape"});
-        return;
-    }
-    if (spec.kinds.size() != spec.kind_weights.size()) {
-        problems.push_back({key, std::to_string(spec.kinds.size()) + " shapes and " +
-                                     std::to_string(spec.kind_weights.size()) +
-                                     " weights: must give one weight per shape"});
-        return;
-    }
-    double total = 0.0;
-    for (std::size_t i = 0; i < spec.kinds.size(); ++i) {
-        const std::string name(shapes::to_string(spec.kinds[i]));
-        if (std::count(spec.kinds.begin(), spec.kinds.begin() + static_cast<std::ptrdiff_t>(i),
-                       spec.kinds[i]) > 0) {
-            problems.push_back({key, "\"" + name + "\" is listed twice: list each shape once"});
-        }
-        if (lacks_shape(base, spec.kinds[i])) {
-            problems.push_back({key,
-                                "\"custom\": stands for the base rock's custom shape (mesh, "
-                                "catalogue entry or vertices), and rocks[0] has none"});
-        }
-        const double weight = spec.kind_weights[i];
-        if (!(weight >= 0.0 && std::isfinite(weight))) {
-            problems.push_back({key, "weight " + number_text(weight) + " of \"" + name +
-                                         "\": must be >= 0 and finite"});
-        } else {
-            total += weight;
-        }
-    }
-    if (!(total > 0.0)) problems.push_back({key, "every weight is 0: at least one must be > 0"});
 }
 
 void check_zones(std::vector<SweepProblem>& problems, const SweepSpec& spec) {
@@ -168,26 +121,24 @@ void check_zones(std::vector<SweepProblem>& problems, const SweepSpec& spec) {
     }
 }
 
-// The largest rock of every kind that can be drawn must fit across the slope with its margin.
+// The largest rock of every shape that can be drawn must fit across the slope with its margin.
 void check_lateral_room(std::vector<SweepProblem>& problems, const SweepSpec& spec,
                         const engine::Scenario& base) {
     const double largest = support(spec.size).upper;
     if (!std::isfinite(largest) || largest <= 0.0) return;
-    for (std::size_t i = 0; i < spec.kinds.size(); ++i) {
-        if (!(spec.kind_weights[i] > 0.0) || lacks_shape(base, spec.kinds[i])) continue;
-        // The bounding radius scales with the size; the unit rock keeps make_rock in its range
-        // whatever size is asked for (the size's own range is the scenario's rule).
-        const double radius =
-            largest * rock_of(base, spec.kinds[i], 1.0).geometry().bounding_radius;
+    // The bounding radius scales with the size; drawable_shapes measures it at 1 m, which keeps
+    // make_rock in its range whatever size is asked for (the size's range is the scenario's).
+    for (const DrawableShape& shape : drawable_shapes(spec, base)) {
+        const double radius = largest * shape.radius_per_size;
         const double half_room = 0.5 * base.slope.width - radius - spec.lateral_margin;
         if (half_room < 0.0) {
             problems.push_back(
-                {"sweep.rock.size",
-                 describe(spec.size) + " m: a " + std::string(shapes::to_string(spec.kinds[i])) +
-                     " of " + number_text(largest) + " m (bounding radius " + number_text(radius) +
-                     " m) with the lateral margin of " + number_text(spec.lateral_margin) +
-                     " m on each side does not fit across " + "the slope (" +
-                     number_text(base.slope.width) + " m wide)"});
+                {"sweep.rock.size", describe(spec.size) + " m: a " + shape.name + " of " +
+                                        number_text(largest) + " m (bounding radius " +
+                                        number_text(radius) + " m) with the lateral margin of " +
+                                        number_text(spec.lateral_margin) +
+                                        " m on each side does not fit across " + "the slope (" +
+                                        number_text(base.slope.width) + " m wide)"});
         }
     }
 }
@@ -268,7 +219,10 @@ std::vector<SweepProblem> find_problems(const SweepSpec& spec, const engine::Sce
     if (spec.samples < 1) {
         problems.push_back({"sweep.samples", std::to_string(spec.samples) + ": must be >= 1"});
     }
-    check_kinds(problems, spec, base);
+    const bool shapes_ok = detail::check_shapes(problems, spec, base);
+    if (spec.sphericity) {
+        check_distribution(problems, "sweep.rock.sphericity", *spec.sphericity, "");
+    }
     const bool size_ok = check_distribution(problems, "sweep.rock.size", spec.size, "m");
     check_distribution(problems, "sweep.rock.density", spec.density, "kg/m3");
     check_distribution(problems, "sweep.rock.material.friction", spec.friction, "");
@@ -288,9 +242,7 @@ std::vector<SweepProblem> find_problems(const SweepSpec& spec, const engine::Sce
         problems.push_back(
             {"sweep.lateral_margin", number_text(spec.lateral_margin) + " m: must be >= 0"});
     }
-    if (size_ok && margin_ok && spec.kinds.size() == spec.kind_weights.size()) {
-        check_lateral_room(problems, spec, base);
-    }
+    if (size_ok && margin_ok && shapes_ok) check_lateral_room(problems, spec, base);
     check_base_motion(problems, base);
     return problems;
 }
@@ -334,7 +286,7 @@ std::array<double, sample_dimensions> unit_point(const SweepSpec& spec, std::int
 }
 
 SampleInputs draw_sample(const SweepSpec& spec, const engine::Scenario& base, std::int64_t index) {
-    assert(!base.rocks.empty() && !spec.zones.empty() && !spec.kinds.empty());
+    assert(!base.rocks.empty() && !spec.zones.empty());
     const std::array<double, sample_dimensions> u = unit_point(spec, index);
 
     SampleInputs s;
@@ -344,7 +296,8 @@ SampleInputs draw_sample(const SweepSpec& spec, const engine::Scenario& base, st
     zone_weights.reserve(spec.zones.size());
     for (const ReleaseZone& zone : spec.zones) zone_weights.push_back(zone.weight);
     s.zone = choose(zone_weights, u[zone_coordinate]);
-    s.kind = spec.kinds[choose(spec.kind_weights, u[kind_coordinate])];
+    detail::draw_shape(spec, base, u[kind_coordinate], u[sphericity_coordinate],
+                       hash(spec.seed, Stream::shape, static_cast<std::uint64_t>(index)), s);
     s.size = inverse_cdf(spec.size, u[size_coordinate]);
     s.density = inverse_cdf(spec.density, u[density_coordinate]);
     s.material.friction = inverse_cdf(spec.friction, u[friction_coordinate]);
@@ -354,8 +307,14 @@ SampleInputs draw_sample(const SweepSpec& spec, const engine::Scenario& base, st
 
     const ReleaseZone& zone = spec.zones[s.zone];
     s.release_distance = inverse_cdf(zone.distance, u[distance_coordinate]);
-    const shapes::RockGeometry rock = rock_of(base, s.kind, s.size).geometry();
-    // validate() checked the largest rock against the band; rounding may leave -1e-17 here.
+    engine::RockSpec drawn;
+    drawn.kind = s.kind;
+    drawn.size = s.size;
+    drawn.shape = s.custom_shape;
+    const shapes::RockGeometry rock = drawn.geometry();
+    s.sphericity = rock.sphericity;
+    // validate() checked the largest rock against the band; rounding may leave -1e-17 here,
+    // and a generated rock wider than the check's reference rocks a little more.
     const double half_band =
         std::max(0.0, 0.5 * base.slope.width - rock.bounding_radius - spec.lateral_margin);
     s.release_lateral =
@@ -374,7 +333,14 @@ SampleInputs draw_sample(const SweepSpec& spec, const engine::Scenario& base, st
 engine::Scenario sample_scenario(const engine::Scenario& base, const SampleInputs& inputs) {
     assert(!base.rocks.empty());
     engine::RockRelease rock = base.rocks.front();
-    rock.rock = rock_of(base, inputs.kind, inputs.size);
+    rock.rock.kind = inputs.kind;
+    rock.rock.size = inputs.size;
+    rock.rock.shape = nullptr;
+    if (inputs.kind == shapes::RockKind::custom) {
+        assert((inputs.custom_shape != nullptr || inputs.shape.empty()) &&
+               "a sample read back from a database needs sample_shape");
+        rock.rock.shape = inputs.custom_shape ? inputs.custom_shape : base.rocks.front().rock.shape;
+    }
     rock.rock.density = inputs.density;
     rock.rock.material = inputs.material;
     rock.release.distance = inputs.release_distance;
@@ -390,6 +356,16 @@ engine::Scenario sample_scenario(const engine::Scenario& base, const SampleInput
     engine::Scenario scenario = base;
     scenario.rocks = {rock};
     return scenario;
+}
+
+engine::Scenario sample_scenario(const SweepSpec& spec, const engine::Scenario& base,
+                                 const SampleInputs& inputs) {
+    if (inputs.custom_shape != nullptr || inputs.kind != shapes::RockKind::custom) {
+        return sample_scenario(base, inputs);
+    }
+    SampleInputs resolved = inputs;
+    resolved.custom_shape = sample_shape(spec, base, inputs);
+    return sample_scenario(base, resolved);
 }
 
 }  // namespace rockfall::risk

@@ -47,12 +47,13 @@ bool needs_wall_hit(Quantity quantity);
 
 /// What results are broken down by.
 enum class GroupBy {
-    none,  ///< one group of all samples
-    kind,  ///< shape family (samples.kind)
-    size,  ///< size class of the nominal size (samples.size_m)
-    zone,  ///< release zone (zones.name)
+    none,   ///< one group of all samples
+    kind,   ///< shape family (samples.kind)
+    size,   ///< size class of the nominal size (samples.size_m)
+    zone,   ///< release zone (zones.name)
+    shape,  ///< rock shape: the family, custom, a named shape or generated (samples.shape)
 };
-/// Name on the command line ("none", "kind", "size", "zone").
+/// Name on the command line ("none", "kind", "size", "zone", "shape").
 std::string_view to_string(GroupBy by);
 /// The grouping of a name; throws std::invalid_argument listing the names.
 GroupBy parse_group_by(std::string_view name);
@@ -73,7 +74,7 @@ void validate_size_edges(const std::vector<double>& edges);
 
 /// Which group a result belongs to.
 struct GroupId {
-    /// "all", the kind, the zone name, or the size class ("[0.2, 0.3)", m).
+    /// "all", the kind, the shape, the zone name, or the size class ("[0.2, 0.3)", m).
     std::string label;
     /// Size class bounds, m; NaN unless grouped by size; the last class ends at +infinity.
     double size_min = std::numeric_limits<double>::quiet_NaN();
@@ -91,8 +92,8 @@ struct Group {
     std::vector<double> values;
 };
 
-/// The values of `quantity` per group: groups with samples only, in kind order, zone order or
-/// size order.
+/// The values of `quantity` per group: groups with samples only, in kind or shape order
+/// (alphabetical), zone order or size order.
 std::vector<Group> read_groups(const ResultsDb& db, Quantity quantity, const Grouping& grouping);
 
 /// One percentile of one group.

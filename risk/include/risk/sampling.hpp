@@ -8,7 +8,11 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rockfall::risk {
@@ -41,10 +45,24 @@ struct SweepSpec {
     std::uint64_t seed = 1;
     /// Planned number of samples (>= 1); Latin hypercube strata are 1 / samples wide.
     std::int64_t samples = 1000;
-    /// Shape families and their weights (same length, weights >= 0, one positive). Kind
-    /// custom stands for base.rocks[0]'s custom shape and needs one.
+    /// Shape families and their weights (same length, weights >= 0, one positive among these,
+    /// entry_weights and generated_weight). Kind custom stands for base.rocks[0]'s custom
+    /// shape and needs one.
     std::vector<shapes::RockKind> kinds = {shapes::RockKind::sphere};
     std::vector<double> kind_weights = {1.0};
+    /// Named shapes drawn besides the families (catalogue entries, hulls given inline), each
+    /// of kind custom, and their weights (same length, >= 0). Names are unique, non-empty and
+    /// none of reserved_shape_names; null entries are not allowed.
+    std::vector<std::shared_ptr<const shapes::CustomShape>> entries;
+    std::vector<double> entry_weights;
+    /// Weight (>= 0) of generated rocks: shapes::rock_with_sphericity with the default options,
+    /// a target Wadell sphericity drawn from `sphericity` and a seed derived from (seed, sample
+    /// index), scaled to the drawn size. One choice covers every shape: kinds, then entries,
+    /// then generated rocks, with weights kind_weights, entry_weights, generated_weight.
+    double generated_weight = 0.0;
+    /// Target sphericity of generated rocks; set exactly when generated_weight > 0, with a
+    /// support inside [min_target_sphericity, max_target_sphericity].
+    std::optional<Distribution> sphericity;
     /// Nominal size (volume-equivalent diameter), m; support inside the scenario's range of
     /// rocks.size ([0.01, 10]; app::validate_sweep checks supports against the scenario's rules).
     Distribution size = fixed(0.2);
@@ -67,6 +85,20 @@ struct SweepSpec {
     bool random_orientation = true;
 };
 
+/// Smallest target sphericity a sweep may draw: rock_with_sphericity reaches about 0.04, but
+/// below 0.3 its rocks (axes 1 : t : t^2, t < 0.16) are slivers thinner than 1/40 of their
+/// length rather than rocks.
+inline constexpr double min_target_sphericity = 0.3;
+/// Largest target sphericity a sweep may draw: the unstretched point cloud of every seed
+/// tried (5000) reaches at least 0.956; a seed that cannot reach the target is replaced by the
+/// next of its chain (see draw_sample).
+inline constexpr double max_target_sphericity = 0.95;
+
+/// Shape names that an entry may not take: the families, "custom" (the base rock's shape) and
+/// "generated" (a rock of target sphericity), as samples and results databases name shapes.
+inline constexpr std::array<std::string_view, 5> reserved_shape_names = {
+    "sphere", "massive", "planar", "custom", "generated"};
+
 /// Lower-case name of a method ("monte_carlo", "latin_hypercube").
 std::string to_string(SweepSpec::Method method);
 
@@ -75,6 +107,25 @@ std::string to_string(SweepSpec::Method method);
 /// random_orientation, speed = its velocity along the surface tangent there, spin = its spin's
 /// y component. Throws std::invalid_argument when base has no rock.
 SweepSpec sweep_defaults(const engine::Scenario& base);
+
+/// A shape that a spec may draw, for checks that depend on the shape.
+struct DrawableShape {
+    /// "sphere", "massive", "planar", "custom" (the base rock's), an entry's name, or
+    /// "generated rock of sphericity 0.7".
+    std::string name;
+    /// The family, or kind custom with its hull.
+    shapes::RockKind kind = shapes::RockKind::sphere;
+    std::shared_ptr<const shapes::CustomShape> shape;
+    /// Bounding radius of the rock at a nominal size of 1 m, m (scales with the size).
+    double radius_per_size = 0.5;
+};
+
+/// The shapes a valid spec draws with weight > 0 (kind custom only when base.rocks[0] has a
+/// shape). Generated rocks are represented by the widest for its size of 16 reference rocks
+/// (seeds 0-15) at the sphericity support's lower end, its radius raised by 10 % for the
+/// spread between seeds (over 1000 seeds the widest was 4.3 % wider); they are left out when
+/// the sphericity distribution or its support is invalid.
+std::vector<DrawableShape> drawable_shapes(const SweepSpec& spec, const engine::Scenario& base);
 
 /// One problem of a sweep spec.
 struct SweepProblem {
@@ -86,13 +137,16 @@ struct SweepProblem {
     std::string message;
 };
 
-/// Every problem of the spec against base: a base without rocks, samples < 1, kinds and
-/// weights, each distribution's parameters (find_problems), speeds below 0, zone names, weights
-/// and count, lateral_margin < 0, a largest rock that does not fit across the slope with its
-/// margin, and a base rock's velocity off the surface tangent or spin off the across-slope
-/// axis (a sweep sets both from speed and spin). Not checked here: the scenario's own ranges
-/// of size, density, material and release distance, which app::validate_sweep applies to the
-/// supports with the scenario file's rules, where they are defined.
+/// Every problem of the spec against base: a base without rocks, samples < 1, kinds, entries,
+/// generated rocks and their weights, a sphericity without generated rocks or the reverse, a
+/// sphericity support outside the targets' range, each distribution's parameters
+/// (find_problems), speeds below 0, zone names, weights and count, lateral_margin < 0, a
+/// largest rock that does not fit across the slope with its margin (for generated rocks,
+/// estimated from reference rocks, see drawable_shapes), and a base rock's velocity off the
+/// surface tangent or spin off the across-slope axis (a sweep sets both from speed and spin).
+/// Not checked here: the scenario's own ranges of size, density, material and release
+/// distance, which app::validate_sweep applies to the supports with the scenario file's rules,
+/// where they are defined.
 std::vector<SweepProblem> find_problems(const SweepSpec& spec, const engine::Scenario& base);
 
 /// Throws std::invalid_argument listing find_problems(spec, base), one per line as
@@ -109,6 +163,20 @@ struct SampleInputs {
     std::size_t zone = 0;
     /// Shape family, nominal size (m) and density (kg/m3).
     shapes::RockKind kind = shapes::RockKind::sphere;
+    /// Which custom shape a sample of kind custom has: "" for base.rocks[0]'s own shape, an
+    /// entry's name (SweepSpec::entries), or "generated" for a rock of target sphericity;
+    /// "" for the families.
+    std::string shape;
+    /// A generated rock's target Wadell sphericity and the seed of its
+    /// shapes::rock_with_sphericity: with the default RandomRockOptions they fix its hull.
+    /// NaN and 0 for every other shape.
+    double target_sphericity = std::numeric_limits<double>::quiet_NaN();
+    std::uint64_t shape_seed = 0;
+    /// Wadell sphericity of the rock simulated, in (0, 1] (1 for a sphere).
+    double sphericity = 1.0;
+    /// The custom hull drawn (null for the families). Not stored in results databases:
+    /// sample_shape rebuilds it from kind, shape, target_sphericity and shape_seed.
+    std::shared_ptr<const shapes::CustomShape> custom_shape;
     double size = 0.2;
     double density = 2600.0;
     /// Rock contact coefficients.
@@ -125,10 +193,11 @@ struct SampleInputs {
     double mass = 0.0;
 };
 
-/// Number of coordinates of a sample's point in the unit hypercube: zone, kind, size, density,
-/// friction, restitution, rolling resistance, distance, lateral, speed, spin, and three for the
-/// orientation, in that order.
-inline constexpr std::size_t sample_dimensions = 14;
+/// Number of coordinates of a sample's point in the unit hypercube: zone, shape, size, density,
+/// friction, restitution, rolling resistance, distance, lateral, speed, spin, three for the
+/// orientation and the target sphericity of a generated rock, in that order (the last was
+/// added after the others, so the draws of the first 14 are those of sweeps without it).
+inline constexpr std::size_t sample_dimensions = 15;
 
 /// Sample `index`'s point in the open unit hypercube (0, 1)^sample_dimensions, a pure function
 /// of (spec.seed, spec.method, spec.samples, index). Its own generator,
@@ -142,18 +211,37 @@ inline constexpr std::size_t sample_dimensions = 14;
 std::array<double, sample_dimensions> unit_point(const SweepSpec& spec, std::int64_t index);
 
 /// Sample `index` (0 <= index; < spec.samples for Latin hypercube) of a validated spec: a pure
-/// function of (spec, base, index). Each input is inverse_cdf (choose for zone and kind) of its
-/// coordinate of unit_point, every coordinate drawn even for fixed inputs so that varying one
-/// input never changes another's draws. The engine seed is a hash of (spec.seed, index) on a
-/// stream of its own. Without random_orientation the orientation is base.rocks[0]'s
-/// orientation_deg.
+/// function of (spec, base, index). Each input is inverse_cdf (choose for zone and shape) of
+/// its coordinate of unit_point, every coordinate drawn even for fixed inputs so that varying
+/// one input never changes another's draws. The shape is chosen among kinds, entries and
+/// generated rocks; a generated rock is rock_with_sphericity(target, shape_seed) with the
+/// default options, target from the sphericity coordinate and shape_seed a hash of
+/// (spec.seed, index) on a stream of its own (a seed whose point cloud cannot reach the target
+/// is replaced by the next of a SplitMix64 chain; none of 5000 seeds needed it). The engine
+/// seed is a hash of (spec.seed, index) on another stream. Without random_orientation the
+/// orientation is base.rocks[0]'s orientation_deg.
 SampleInputs draw_sample(const SweepSpec& spec, const engine::Scenario& base, std::int64_t index);
+
+/// The custom hull of a sample as draw_sample made it, from what a results database stores
+/// (kind, shape, target_sphericity, shape_seed): null for the families, base.rocks[0]'s shape
+/// for "", the entry of that name, or the generated rock. Throws std::invalid_argument for an
+/// entry name the spec does not have or a generated rock without a valid target.
+std::shared_ptr<const shapes::CustomShape> sample_shape(const SweepSpec& spec,
+                                                        const engine::Scenario& base,
+                                                        const SampleInputs& inputs);
 
 /// The one-rock scenario that sample runs: base with rocks = {base.rocks[0] with the inputs}:
 /// kind, size, density, material, release distance and lateral; velocity = speed times the
 /// downslope surface tangent at the release point; spin = spin about +y (across the slope),
 /// which rolls a rock downslope when positive (omega y x r n = r omega t); orientation_deg
-/// from the inputs with random_orientation false, so the scenario alone fixes the rock.
+/// from the inputs with random_orientation false, so the scenario alone fixes the rock. A
+/// custom rock takes inputs.custom_shape, or base.rocks[0]'s shape when that is null and
+/// inputs.shape is "" (inputs read back from a database: use the overload with the spec).
 engine::Scenario sample_scenario(const engine::Scenario& base, const SampleInputs& inputs);
+
+/// sample_scenario with the custom hull rebuilt by sample_shape when inputs.custom_shape is
+/// null (a sample read back from a results database).
+engine::Scenario sample_scenario(const SweepSpec& spec, const engine::Scenario& base,
+                                 const SampleInputs& inputs);
 
 }  // namespace rockfall::risk
