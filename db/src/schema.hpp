@@ -15,8 +15,8 @@ extern const std::string_view soil_definition;
 
 /// Tables and views every database of this version has; open() checks they exist.
 inline constexpr std::array<std::string_view, 15> objects = {
-    "run",          "zones",        "samples",        "outcomes",       "stations",
-    "wall_impacts", "trajectories", "sample_results", "impact_results", "sample_impacts",
-    "soil_run",     "soil_load",    "soil_load_steps", "soil_motion",   "soil_deposit"};
+    "run",          "zones",        "samples",         "outcomes",       "stations",
+    "wall_impacts", "trajectories", "sample_results",  "impact_results", "sample_impacts",
+    "soil_run",     "soil_load",    "soil_load_steps", "soil_motion",    "soil_deposit"};
 
 }  // namespace rockfall::db::schema

@@ -38,8 +38,9 @@ Eigen::Matrix3d surface_frame(const shapes::Slope& slope, double x);
 
 // Where and how a rock starts: on the surface point at release.distance, shifted by
 // release.lateral, lifted along the normal until its lowest point is release.height above
-// the surface (with a terrain mesh: the point of the mesh under it, along the mesh's normal). Always draws three uniforms from `random`, so each rock consumes the same
-// amount of the stream whether or not its orientation is random.
+// the surface (with a terrain mesh: the point of the mesh under it, along the mesh's normal).
+// Always draws three uniforms from `random`, so each rock consumes the same amount of the stream
+// whether or not its orientation is random.
 BodyState release_state(const shapes::Slope& slope, const shapes::RockGeometry& rock,
                         const Release& release, Random& random);
 
