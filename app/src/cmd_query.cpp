@@ -2,9 +2,11 @@
 
 #include "commands.hpp"
 #include "query_report.hpp"
+#include "soil_report.hpp"
 
 #include "db/queries.hpp"
 #include "db/results_db.hpp"
+#include "db/soil_run.hpp"
 
 #include <iostream>
 #include <memory>
@@ -55,9 +57,19 @@ db::ResultsDb open_database(const QueryArgs& args) {
 }
 
 void run_summary(const QueryArgs& args) {
-    const db::ResultsDb database = open_database(args);
+    // A soil database has a summary of its own; every other query is about rock sweeps.
+    const db::ResultsDb database = db::ResultsDb::open_any(args.database, false);
+    if (database.kind() == db::RunKind::soil_flow) {
+        write_soil_summary(std::cout, format_of(args), args.database, db::read_soil_run(database));
+        return;
+    }
     write_summary(std::cout, format_of(args), args.database,
                   db::summarize(database, args.confidence));
+}
+
+void run_history(const QueryArgs& args) {
+    const db::ResultsDb database = db::ResultsDb::open_any(args.database, false);
+    write_soil_history(std::cout, format_of(args), args.database, db::read_soil_run(database));
 }
 
 void run_percentiles(const QueryArgs& args) {
@@ -127,7 +139,9 @@ void add_grouping(CLI::App* cmd, QueryArgs& args) {
 void register_query(CLI::App& app) {
     auto args = std::make_shared<QueryArgs>();
     CLI::App* query =
-        app.add_subcommand("query", "Questions on a results database written by `rockfall sweep`");
+        app.add_subcommand("query",
+                           "Questions on a results database written by `rockfall sweep` or "
+                           "`rockfall soil --db`");
     query->add_option("database", args->database, "Results database (.db)")->required();
     query->require_subcommand(1);
 
@@ -135,6 +149,14 @@ void register_query(CLI::App& app) {
         "summary", "The run, stop reasons, reach, wall and station shares, wall loads");
     add_common(summary, *args);
     summary->callback([args] { run_summary(*args); });
+
+    CLI::App* history = query->add_subcommand(
+        "history",
+        "A soil flow's wall load, centre of mass and front over time (`rockfall soil --db`)");
+    CLI::Option* history_json = history->add_flag("--json", args->json, "Print one JSON document");
+    history->add_flag("--csv", args->csv, "Print CSV (units in the column names)")
+        ->excludes(history_json);
+    history->callback([args] { run_history(*args); });
 
     CLI::App* pct = query->add_subcommand(
         "percentiles", "Percentiles with distribution-free confidence intervals");

@@ -1,25 +1,24 @@
-// `rockfall soil`: one soil flow (scenario C, MPM), summary or JSON, optional wall-load CSV
-// and particle frames for ParaView.
+// `rockfall soil`: one soil flow (scenario C, MPM), summary or JSON, optional wall-load CSV,
+// particle frames for ParaView and a results database.
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
-#include "text_format.hpp"
+#include "query_table.hpp"
+#include "soil_report.hpp"
+#include "sweep_record.hpp"
 
 #include "app/soil_file.hpp"
+#include "db/soil_run.hpp"
 #include "mpm/soil.hpp"
 #include "mpm/vtk.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
@@ -34,50 +33,8 @@ struct SoilArgs {
     bool json = false;
     std::string vtk_dir;
     std::string csv;
+    std::string db;
 };
-
-// Units of the outcome's extensive quantities: a 2D run is a plane-strain section, so its
-// forces, impulses, masses and energies are per metre of width.
-struct Units {
-    const char* force;
-    const char* impulse;
-    const char* mass;
-    // A JSON key or CSV column with a unit suffix: "wall_force_N", or "wall_force_N_per_m" in 2D.
-    std::string key(const char* base) const {
-        return per_metre ? base + std::string("_per_m") : base;
-    }
-    bool per_metre;
-};
-
-Units units_of(const mpm::SoilOutcome& outcome) {
-    if (outcome.dimension == 2) return {"N/m", "N s/m", "kg/m", true};
-    return {"N", "N s", "kg", false};
-}
-
-const char* to_string(mpm::SoilStatus status) {
-    switch (status) {
-        case mpm::SoilStatus::completed:
-            return "completed";
-        case mpm::SoilStatus::left_domain:
-            return "left_domain";
-        case mpm::SoilStatus::non_finite:
-            return "non_finite";
-    }
-    return "unknown";
-}
-
-double peak_step_force(const mpm::SoilOutcome& outcome) {
-    double peak = 0.0;
-    for (const double f : outcome.step_wall_force) peak = std::max(peak, f);
-    return peak;
-}
-
-// The highest bin of the deposit's height profile, if any soil rests on the slope.
-std::optional<std::size_t> highest_bin(const mpm::SoilDeposit& deposit) {
-    const auto& h = deposit.profile_height;
-    if (h.empty()) return std::nullopt;
-    return static_cast<std::size_t>(std::max_element(h.begin(), h.end()) - h.begin());
-}
 
 // Writes particle frames as DIR/frame_NNNNN.vtk. The solver's callback must not throw, so the
 // first write error is kept and rethrown after the run.
@@ -113,133 +70,17 @@ class VtkFrames {
     std::string error_;
 };
 
-// Writes the sampled wall-load history (committed only when complete).
-void write_csv(const fs::path& path, const mpm::SoilOutcome& o) {
-    const Units u = units_of(o);
+// Writes the sampled history (committed only when complete).
+void write_csv(const fs::path& path, const db::SoilRunRecord& record) {
     AtomicFile file(path);
-    std::ofstream& out = file.stream();
-    out << "time_s," << u.key("wall_force_N") << ',' << u.key("wall_force_filtered_N")
-        << ",centre_of_mass_x_m,centre_of_mass_z_m,front_x_m," << u.key("kinetic_energy_J") << '\n'
-        << std::setprecision(9);
-    for (std::size_t k = 0; k < o.sample_time.size(); ++k) {
-        out << o.sample_time[k] << ',' << o.wall_force[k] << ',' << o.wall_force_filtered[k] << ','
-            << o.centre_of_mass[k].x() << ',' << o.centre_of_mass[k].z() << ',' << o.front_x[k]
-            << ',' << o.kinetic_energy[k] << '\n';
-    }
+    print_csv(file.stream(), soil_history(record));
     file.commit();
-}
-
-struct RunInfo {
-    std::string path;
-    double runtime = 0.0;
-};
-
-void print_summary(std::ostream& out, const SoilFile& file, const mpm::SoilOutcome& o,
-                   const RunInfo& info) {
-    const mpm::SoilScenario& s = file.scenario;
-    const Units u = units_of(o);
-    out << "soil scenario " << file.name << " (" << info.path << ")\n";
-    out << "  "
-        << (o.dimension == 2 ? "2D plane strain: forces, impulses and masses per metre "
-                               "of width"
-                             : "3D")
-        << ", cell " << fmt("%.3f m", s.numerics.cell_size) << ", " << o.particles
-        << " particles, soil mass " << fmt("%.1f ", o.mass) << u.mass << '\n';
-    out << "status: " << to_string(o.status);
-    if (!o.message.empty()) out << " (" << o.message << ")";
-    out << '\n';
-    out << "simulated " << fmt("%.3f s", o.step_time.empty() ? 0.0 : o.step_time.back()) << " in "
-        << o.steps << " steps; runtime " << fmt("%.2f s", info.runtime) << '\n';
-    if (s.slope.wall.enabled) {
-        out << "wall load (normal to the wall, " << fmt("%.2f m", s.slope.wall.distance_from_toe)
-            << " past the toe), " << u.force << ":\n";
-        out << "  peak " << fmt("%.1f ", o.peak_wall_force) << u.force << " at "
-            << fmt("%.3f s", o.peak_wall_force_time) << " (mean over each "
-            << fmt("%g s", s.output.sample_interval) << " sample)\n";
-        out << "  peak filtered " << fmt("%.1f ", o.peak_wall_force_filtered) << u.force
-            << " (centred moving average over " << fmt("%g s", s.output.filter_window) << ")\n";
-        out << "  peak raw " << fmt("%.1f ", peak_step_force(o)) << u.force << " (single step)\n";
-        out << "  total impulse " << fmt("%.1f ", o.wall_impulse) << u.impulse << '\n';
-    } else {
-        out << "wall: none in this scenario\n";
-    }
-    const mpm::SoilDeposit& d = o.deposit;
-    out << "deposit:\n";
-    out << "  runout " << fmt("%.2f m", d.runout_past_toe) << " past the toe (x "
-        << fmt("%.2f m", d.runout_x) << ")\n";
-    if (!o.front_x.empty()) {
-        const mpm::Vec3& c = o.centre_of_mass.back();
-        out << "  final front x " << fmt("%.2f m", o.front_x.back()) << ", centre of mass x "
-            << fmt("%.2f m", c.x()) << ", z " << fmt("%.2f m", c.z()) << '\n';
-    }
-    if (const auto top = highest_bin(d)) {
-        out << "  max height " << fmt("%.2f m", d.profile_height[*top]) << " above the slope at x "
-            << fmt("%.2f m", d.profile_x[*top]) << " (profile of " << d.profile_x.size()
-            << " bins from x " << fmt("%.2f m", d.profile_x.front()) << " to "
-            << fmt("%.2f m", d.profile_x.back()) << ")\n";
-    }
-}
-
-nlohmann::json history_json(const mpm::SoilOutcome& o, const Units& u) {
-    nlohmann::json rows = nlohmann::json::array();
-    for (std::size_t k = 0; k < o.sample_time.size(); ++k) {
-        rows.push_back({o.sample_time[k], o.wall_force[k], o.wall_force_filtered[k],
-                        o.centre_of_mass[k].x(), o.centre_of_mass[k].z(), o.front_x[k],
-                        o.kinetic_energy[k]});
-    }
-    return {{"columns",
-             {"time_s", u.key("wall_force_N"), u.key("wall_force_filtered_N"), "centre_of_mass_x_m",
-              "centre_of_mass_z_m", "front_x_m", u.key("kinetic_energy_J")}},
-            {"rows", std::move(rows)}};
-}
-
-nlohmann::json outcome_json(const SoilFile& file, const mpm::SoilOutcome& o, const RunInfo& info) {
-    const mpm::SoilScenario& s = file.scenario;
-    const Units u = units_of(o);
-    nlohmann::json profile = nlohmann::json::array();
-    for (std::size_t b = 0; b < o.deposit.profile_x.size(); ++b) {
-        profile.push_back({o.deposit.profile_x[b], o.deposit.profile_height[b]});
-    }
-    nlohmann::json deposit = {
-        {"runout_x_m", o.deposit.runout_x},
-        {"runout_past_toe_m", o.deposit.runout_past_toe},
-        {"height_profile", {{"columns", {"x_m", "height_m"}}, {"rows", std::move(profile)}}}};
-    if (const auto top = highest_bin(o.deposit)) {
-        deposit["max_height_m"] = o.deposit.profile_height[*top];
-        deposit["max_height_x_m"] = o.deposit.profile_x[*top];
-    }
-    nlohmann::json result = {{"scenario", file.name},
-                             {"scenario_file", info.path},
-                             {"dimension", o.dimension},
-                             {"per_metre_of_width", u.per_metre},
-                             {"status", to_string(o.status)},
-                             {"message", o.message},
-                             {"particles", o.particles},
-                             {u.key("mass_kg"), o.mass},
-                             {"steps", o.steps},
-                             {"simulated_time_s", o.step_time.empty() ? 0.0 : o.step_time.back()},
-                             {"runtime_s", info.runtime},
-                             {"wall_enabled", s.slope.wall.enabled},
-                             {"wall_distance_from_toe_m", s.slope.wall.distance_from_toe},
-                             {"sample_interval_s", s.output.sample_interval},
-                             {"filter_window_s", s.output.filter_window},
-                             {u.key("peak_wall_force_N"), o.peak_wall_force},
-                             {"peak_wall_force_time_s", o.peak_wall_force_time},
-                             {u.key("peak_wall_force_filtered_N"), o.peak_wall_force_filtered},
-                             {u.key("peak_wall_force_step_N"), peak_step_force(o)},
-                             {u.key("wall_impulse_N_s"), o.wall_impulse},
-                             {"deposit", std::move(deposit)},
-                             {"history", history_json(o, u)}};
-    if (!o.front_x.empty()) {
-        result["final_front_x_m"] = o.front_x.back();
-        const mpm::Vec3& c = o.centre_of_mass.back();
-        result["final_centre_of_mass_m"] = {c.x(), c.y(), c.z()};
-    }
-    return result;
 }
 
 void run_soil_command(const SoilArgs& args) {
     const SoilFile file = load_soil_scenario(args.scenario);
+    // Refuse an existing or unwritable database now rather than after the run.
+    if (!args.db.empty()) db::check_new_database(args.db);
     std::unique_ptr<VtkFrames> frames;
     if (!args.vtk_dir.empty()) frames = std::make_unique<VtkFrames>(args.vtk_dir);
     const bool progress = isatty(STDERR_FILENO) != 0;
@@ -249,21 +90,30 @@ void run_soil_command(const SoilArgs& args) {
         if (progress) std::fprintf(stderr, "\rsoil flow: t = %.2f / %.2f s", frame.time, duration);
     };
 
+    SoilRunTimes times;
+    times.started_at = utc_now();
     const auto start = std::chrono::steady_clock::now();
     const mpm::SoilOutcome outcome = mpm::run_soil(file.scenario, on_frame);
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    times.runtime = elapsed.count();
+    times.finished_at = utc_now();
     if (progress) std::fprintf(stderr, "\r%40s\r", "");
     if (frames) frames->finish();
-    if (!args.csv.empty()) write_csv(args.csv, outcome);
+    const db::SoilRunRecord record = make_soil_record(file, outcome, times);
+    if (!args.csv.empty()) write_csv(args.csv, record);
+    if (!args.db.empty()) db::write_soil_run(args.db, record);
 
-    const RunInfo info{args.scenario, elapsed.count()};
     if (args.json) {
-        std::cout << outcome_json(file, outcome, info).dump(2) << '\n';
+        nlohmann::json document = soil_json(record);
+        document["scenario_file"] = args.scenario;
+        if (!args.db.empty()) document["database"] = args.db;
+        std::cout << document.dump(2) << '\n';
         return;
     }
-    print_summary(std::cout, file, outcome, info);
+    print_soil_summary(std::cout, record, args.scenario);
     if (frames) std::cout << frames->count() << " VTK frames written to " << args.vtk_dir << '\n';
     if (!args.csv.empty()) std::cout << "wall-load history written to " << args.csv << '\n';
+    if (!args.db.empty()) std::cout << "run and histories stored in " << args.db << '\n';
 }
 
 }  // namespace
@@ -282,6 +132,9 @@ void register_soil(CLI::App& app) {
     cmd->add_option("--csv", args->csv,
                     "Write the sampled wall-load, centre-of-mass and front history to this CSV "
                     "file");
+    cmd->add_option("--db", args->db,
+                    "Store the run, its wall-load, motion and deposit histories in this new "
+                    "results database (never overwritten; read it with `rockfall query`)");
     cmd->callback([args] { run_soil_command(*args); });
 }
 

@@ -177,6 +177,7 @@ void check_soil(const mpm::SoilScenario& s, const detail::SourceMap& sources,
 SoilFile parse(std::string_view text, const std::string& source, const fs::path& base_dir,
                std::vector<fs::path> chain) {
     toml::table root = detail::parse_toml(text, source);
+    const bool extended = root.contains("extends");
     root = detail::resolve_extends(std::move(root), source, base_dir, chain);
 
     std::vector<ScenarioProblem> problems;
@@ -188,7 +189,14 @@ SoilFile parse(std::string_view text, const std::string& source, const fs::path&
     if (loaded.name.empty()) loaded.name = fs::path(source).stem().string();
     check_soil(loaded.scenario, sources, problems);
     if (!problems.empty()) throw ScenarioError(std::move(problems));
-    loaded.text = std::string(text);
+    if (extended) {
+        // The merged tables, so that the text stands alone (results databases keep it).
+        std::ostringstream merged;
+        merged << toml::toml_formatter(root);
+        loaded.text = merged.str();
+    } else {
+        loaded.text = std::string(text);
+    }
     return loaded;
 }
 

@@ -57,7 +57,7 @@ void require_creatable(const fs::path& path) {
     std::error_code error;
     if (fs::exists(fs::symlink_status(path, error))) {
         refuse(path,
-               " exists already; a sweep never overwrites results: choose another file "
+               " exists already; rockfall never overwrites results: choose another file "
                "name, or delete the file first");
     }
     const fs::path directory = directory_of(path);

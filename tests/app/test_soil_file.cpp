@@ -130,3 +130,21 @@ TEST_CASE("soil file: a soil without friction needs cohesion", "[app][soil]") {
         CHECK_THAT(problem.message, Contains("must be > 0 when friction_angle_deg = 0"));
     }
 }
+
+TEST_CASE("soil file: with extends, the text is the merged scenario and stands alone",
+          "[app][soil]") {
+    const std::string child = "extends = \"quick_2d.toml\"\n[output]\nduration = 1.5\n";
+    const rockfall::app::SoilFile file =
+        rockfall::app::parse_soil_scenario(child, "child.toml", samples);
+    CHECK(file.scenario.output.duration == 1.5);
+    CHECK(file.scenario.numerics.dimension == 2);
+    CHECK(file.text.find("extends") == std::string::npos);
+    // Read back from its own text, without the base file, it is the same scenario.
+    const rockfall::app::SoilFile again =
+        rockfall::app::parse_soil_scenario(file.text, "stored.toml", fs::path("/nonexistent"));
+    CHECK(again.name == file.name);
+    CHECK(again.scenario.output.duration == 1.5);
+    CHECK(again.scenario.numerics.dimension == 2);
+    CHECK(again.scenario.slope.wall.distance_from_toe ==
+          file.scenario.slope.wall.distance_from_toe);
+}

@@ -24,7 +24,8 @@ struct SoilFile {
     std::string name;
     /// The validated scenario.
     mpm::SoilScenario scenario;
-    /// The file's text as written.
+    /// The file's text as written; for a file with `extends`, the resolved tables (the base
+    /// merged with the file) as TOML, so that the text stands alone.
     std::string text;
     /// Path it was read from.
     std::filesystem::path path;

@@ -1,0 +1,318 @@
+#include "soil_report.hpp"
+
+#include "sweep_record.hpp"
+#include "text_format.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace rockfall::app {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// Units of the extensive quantities: a 2D run is a plane-strain section, so its forces,
+// impulses, masses and energies are per metre of width.
+struct Units {
+    const char* force;
+    const char* impulse;
+    const char* mass;
+    bool per_metre;
+    // A key or column with a unit suffix: "wall_force_N", or "wall_force_N_per_m" in 2D.
+    std::string key(const char* base) const {
+        return per_metre ? base + std::string("_per_m") : base;
+    }
+};
+
+Units units_of(const db::SoilRunRecord& r) {
+    if (r.dimension == 2) return {"N/m", "N s/m", "kg/m", true};
+    return {"N", "N s", "kg", false};
+}
+
+const char* to_string(mpm::SoilStatus status) {
+    switch (status) {
+        case mpm::SoilStatus::completed:
+            return "completed";
+        case mpm::SoilStatus::left_domain:
+            return "left_domain";
+        case mpm::SoilStatus::non_finite:
+            return "non_finite";
+    }
+    return "unknown";
+}
+
+// A scene vector of a run: its y is NaN in 2D, where a plane-strain section has none.
+db::SceneVector scene(const mpm::Vec3& v, int dimension) {
+    return {v.x(), dimension == 2 ? nan : v.y(), v.z()};
+}
+
+// A JSON number, or null for NaN (a quantity a run does not have).
+nlohmann::json number(double value) {
+    return std::isnan(value) ? nlohmann::json(nullptr) : nlohmann::json(value);
+}
+
+bool has_wall(const db::SoilRunRecord& r) { return !std::isnan(r.wall_distance_from_toe); }
+
+// The highest bin of the deposit's height profile, if any soil rests on the slope.
+std::optional<std::size_t> highest_bin(const db::SoilRunRecord& r) {
+    if (r.deposit.empty()) return std::nullopt;
+    const auto top = std::max_element(r.deposit.begin(), r.deposit.end(),
+                                      [](const db::SoilDepositBin& a, const db::SoilDepositBin& b) {
+                                          return a.height < b.height;
+                                      });
+    return static_cast<std::size_t>(top - r.deposit.begin());
+}
+
+}  // namespace
+
+db::SoilRunRecord make_soil_record(const SoilFile& file, const mpm::SoilOutcome& o,
+                                   const SoilRunTimes& times) {
+    const mpm::SoilScenario& s = file.scenario;
+    db::SoilRunRecord r;
+    r.run.tool_version = ROCKFALL_VERSION;
+    r.run.build = ROCKFALL_BUILD;
+    r.run.scenario_name = file.name;
+    r.run.scenario_text = file.text;
+    r.run.scenario_hash = identity_hash({file.text, nlohmann::json::object(), ""});
+    r.run.seed = 0;  // the flow is deterministic
+    r.run.method = "mpm";
+    r.run.samples_planned = 1;
+    r.run.stop_rule = "duration " + fmt("%g s", s.output.duration);
+    r.run.settings_json = nlohmann::json{
+        {"dimension", s.numerics.dimension},
+        {"cell_size_m", s.numerics.cell_size},
+        {"particles_per_cell", s.numerics.particles_per_cell},
+        {"cfl", s.numerics.cfl},
+        {"threads",
+         s.numerics.threads}}.dump();
+    r.run.started_at = times.started_at;
+    r.run.finished_at = times.finished_at;
+    r.run.status = "complete";
+
+    r.dimension = o.dimension;
+    r.outcome = to_string(o.status);
+    r.message = o.message;
+    r.particles = o.particles;
+    r.steps = o.steps;
+    r.cell_size = s.numerics.cell_size;
+    r.mass = o.mass;
+    r.simulated_time = o.step_time.empty() ? 0.0 : o.step_time.back();
+    r.runtime = times.runtime;
+    r.wall_distance_from_toe = s.slope.wall.enabled ? s.slope.wall.distance_from_toe : nan;
+    r.sample_interval = s.output.sample_interval;
+    r.filter_window = s.output.filter_window;
+    r.peak_force = o.peak_wall_force;
+    r.peak_time = o.peak_wall_force_time;
+    r.peak_force_filtered = o.peak_wall_force_filtered;
+    r.peak_force_step = 0.0;
+    for (const double f : o.step_wall_force) r.peak_force_step = std::max(r.peak_force_step, f);
+    r.impulse = o.wall_impulse;
+    r.runout_x = o.deposit.runout_x;
+    r.runout_past_toe = o.deposit.runout_past_toe;
+
+    for (std::size_t k = 0; k < o.sample_time.size(); ++k) {
+        r.load.push_back({o.sample_time[k], scene(o.wall_load[k], o.dimension),
+                          scene(o.wall_load_filtered[k], o.dimension)});
+        r.motion.push_back({o.sample_time[k], scene(o.centre_of_mass[k], o.dimension), o.front_x[k],
+                            o.kinetic_energy[k]});
+    }
+    double previous = 0.0;
+    for (std::size_t k = 0; k < o.step_time.size(); ++k) {
+        r.step_load.push_back(
+            {o.step_time[k], o.step_time[k] - previous, scene(o.step_wall_load[k], o.dimension)});
+        previous = o.step_time[k];
+    }
+    for (std::size_t b = 0; b < o.deposit.profile_x.size(); ++b) {
+        r.deposit.push_back({o.deposit.profile_x[b], o.deposit.profile_height[b]});
+    }
+    return r;
+}
+
+void print_soil_summary(std::ostream& out, const db::SoilRunRecord& r, const std::string& origin) {
+    const Units u = units_of(r);
+    out << "soil scenario " << r.run.scenario_name << " (" << origin << ")\n";
+    out << "  "
+        << (u.per_metre ? "2D plane strain: forces, impulses and masses per metre of width" : "3D")
+        << ", cell " << fmt("%.3f m", r.cell_size) << ", " << r.particles
+        << " particles, soil mass " << fmt("%.1f ", r.mass) << u.mass << '\n';
+    out << "status: " << r.outcome;
+    if (!r.message.empty()) out << " (" << r.message << ")";
+    out << '\n';
+    out << "simulated " << fmt("%.3f s", r.simulated_time) << " in " << r.steps
+        << " steps; runtime " << fmt("%.2f s", r.runtime) << '\n';
+    if (has_wall(r)) {
+        out << "wall load (normal to the wall, " << fmt("%.2f m", r.wall_distance_from_toe)
+            << " past the toe), " << u.force << ":\n";
+        out << "  peak " << fmt("%.1f ", r.peak_force) << u.force << " at "
+            << fmt("%.3f s", r.peak_time) << " (mean over each " << fmt("%g s", r.sample_interval)
+            << " sample)\n";
+        out << "  peak filtered " << fmt("%.1f ", r.peak_force_filtered) << u.force
+            << " (centred moving average over " << fmt("%g s", r.filter_window) << ")\n";
+        out << "  peak raw " << fmt("%.1f ", r.peak_force_step) << u.force << " (single step)\n";
+        out << "  total impulse " << fmt("%.1f ", r.impulse) << u.impulse << '\n';
+    } else {
+        out << "wall: none in this scenario\n";
+    }
+    out << "deposit:\n";
+    out << "  runout " << fmt("%.2f m", r.runout_past_toe) << " past the toe (x "
+        << fmt("%.2f m", r.runout_x) << ")\n";
+    if (!r.motion.empty()) {
+        const db::SoilMotionSample& last = r.motion.back();
+        out << "  final front x " << fmt("%.2f m", last.front_x) << ", centre of mass x "
+            << fmt("%.2f m", last.centre_of_mass[0]) << ", z "
+            << fmt("%.2f m", last.centre_of_mass[2]) << '\n';
+    }
+    if (const auto top = highest_bin(r)) {
+        out << "  max height " << fmt("%.2f m", r.deposit[*top].height) << " above the slope at x "
+            << fmt("%.2f m", r.deposit[*top].x) << " (profile of " << r.deposit.size()
+            << " bins from x " << fmt("%.2f m", r.deposit.front().x) << " to "
+            << fmt("%.2f m", r.deposit.back().x) << ")\n";
+    }
+}
+
+nlohmann::json soil_json(const db::SoilRunRecord& r) {
+    const Units u = units_of(r);
+    nlohmann::json profile = nlohmann::json::array();
+    for (const db::SoilDepositBin& bin : r.deposit) profile.push_back({bin.x, bin.height});
+    nlohmann::json deposit = {
+        {"runout_x_m", r.runout_x},
+        {"runout_past_toe_m", r.runout_past_toe},
+        {"height_profile", {{"columns", {"x_m", "height_m"}}, {"rows", std::move(profile)}}}};
+    if (const auto top = highest_bin(r)) {
+        deposit["max_height_m"] = r.deposit[*top].height;
+        deposit["max_height_x_m"] = r.deposit[*top].x;
+    }
+    const Table history = soil_history(r);
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& row : history.rows) {
+        nlohmann::json values = nlohmann::json::array();
+        for (const Cell& cell : row) values.push_back(number(std::get<double>(cell)));
+        rows.push_back(std::move(values));
+    }
+    nlohmann::json result = {
+        {"scenario", r.run.scenario_name},
+        {"dimension", r.dimension},
+        {"per_metre_of_width", u.per_metre},
+        {"status", r.outcome},
+        {"message", r.message},
+        {"particles", r.particles},
+        {u.key("mass_kg"), r.mass},
+        {"steps", r.steps},
+        {"simulated_time_s", r.simulated_time},
+        {"runtime_s", r.runtime},
+        {"wall_enabled", has_wall(r)},
+        {"wall_distance_from_toe_m", number(r.wall_distance_from_toe)},
+        {"sample_interval_s", r.sample_interval},
+        {"filter_window_s", r.filter_window},
+        {u.key("peak_wall_force_N"), r.peak_force},
+        {"peak_wall_force_time_s", r.peak_time},
+        {u.key("peak_wall_force_filtered_N"), r.peak_force_filtered},
+        {u.key("peak_wall_force_step_N"), r.peak_force_step},
+        {u.key("wall_impulse_N_s"), r.impulse},
+        {"deposit", std::move(deposit)},
+        {"history", {{"columns", history.columns}, {"rows", std::move(rows)}}}};
+    if (!r.motion.empty()) {
+        const db::SoilMotionSample& last = r.motion.back();
+        result["final_front_x_m"] = last.front_x;
+        result["final_centre_of_mass_m"] = {number(last.centre_of_mass[0]),
+                                            number(last.centre_of_mass[1]),
+                                            number(last.centre_of_mass[2])};
+    }
+    return result;
+}
+
+Table soil_summary_items(const db::SoilRunRecord& r) {
+    const Units u = units_of(r);
+    Table table{{"item", "value"}, {}};
+    const auto add = [&table](const std::string& name, Cell value) {
+        table.rows.push_back({name, std::move(value)});
+    };
+    add("scenario_name", r.run.scenario_name);
+    add("scenario_hash", r.run.scenario_hash);
+    add("dimension", static_cast<std::int64_t>(r.dimension));
+    add("status", r.outcome);
+    add("particles", r.particles);
+    add(u.key("mass_kg"), r.mass);
+    add("steps", r.steps);
+    add("simulated_time_s", r.simulated_time);
+    add("runtime_s", r.runtime);
+    add("wall_distance_from_toe_m", r.wall_distance_from_toe);
+    add(u.key("peak_wall_force_N"), r.peak_force);
+    add("peak_wall_force_time_s", r.peak_time);
+    add(u.key("peak_wall_force_filtered_N"), r.peak_force_filtered);
+    add(u.key("peak_wall_force_step_N"), r.peak_force_step);
+    add(u.key("wall_impulse_N_s"), r.impulse);
+    add("runout_x_m", r.runout_x);
+    add("runout_past_toe_m", r.runout_past_toe);
+    if (const auto top = highest_bin(r)) {
+        add("max_height_m", r.deposit[*top].height);
+        add("max_height_x_m", r.deposit[*top].x);
+    }
+    add("started_at", r.run.started_at);
+    add("finished_at", r.run.finished_at);
+    add("tool_version", r.run.tool_version);
+    return table;
+}
+
+Table soil_history(const db::SoilRunRecord& r) {
+    const Units u = units_of(r);
+    Table table{
+        {"time_s", u.key("wall_force_N"), u.key("wall_force_filtered_N"), "centre_of_mass_x_m",
+         "centre_of_mass_z_m", "front_x_m", u.key("kinetic_energy_J")},
+        {}};
+    const std::size_t rows = std::min(r.load.size(), r.motion.size());
+    for (std::size_t k = 0; k < rows; ++k) {
+        const db::SoilMotionSample& m = r.motion[k];
+        table.rows.push_back({r.load[k].time, r.load[k].force[0], r.load[k].force_filtered[0],
+                              m.centre_of_mass[0], m.centre_of_mass[2], m.front_x,
+                              m.kinetic_energy});
+    }
+    return table;
+}
+
+void write_soil_summary(std::ostream& out, QueryFormat format, const std::string& database,
+                        const db::SoilRunRecord& record) {
+    switch (format) {
+        case QueryFormat::text:
+            print_soil_summary(out, record, "stored in " + database);
+            out << "run: started " << record.run.started_at << ", finished "
+                << record.run.finished_at << ", rockfall " << record.run.tool_version << " ("
+                << record.run.build << "); scenario hash " << record.run.scenario_hash << '\n';
+            return;
+        case QueryFormat::json: {
+            nlohmann::json document = soil_json(record);
+            document["database"] = database;
+            document["query"] = "summary";
+            out << document.dump(2) << '\n';
+            return;
+        }
+        case QueryFormat::csv:
+            print_csv(out, soil_summary_items(record));
+            return;
+    }
+}
+
+void write_soil_history(std::ostream& out, QueryFormat format, const std::string& database,
+                        const db::SoilRunRecord& record) {
+    const Table table = soil_history(record);
+    switch (format) {
+        case QueryFormat::text:
+            out << "database: " << database << " (soil flow " << record.run.scenario_name << ")\n";
+            print_text(out, table);
+            return;
+        case QueryFormat::json:
+            out << nlohmann::ordered_json{{"database", database},
+                                          {"query", "history"},
+                                          {"rows", rows_json(table)}}
+                       .dump(2)
+                << '\n';
+            return;
+        case QueryFormat::csv:
+            print_csv(out, table);
+            return;
+    }
+}
+
+}  // namespace rockfall::app

@@ -1,0 +1,60 @@
+#pragma once
+/// A soil flow's record and its reports: what `rockfall soil` prints and stores with --db, and
+/// what `rockfall query DB summary|history` prints back from a soil database. One record, so
+/// both print the same. Every number carries its unit; in 2D forces, impulses, masses and
+/// energies are per metre of width and say so.
+
+#include "query_table.hpp"
+
+#include "app/soil_file.hpp"
+#include "db/soil_run.hpp"
+#include "mpm/soil.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+#include <string>
+
+namespace rockfall::app {
+
+/// When a soil flow ran and how long it took.
+struct SoilRunTimes {
+    /// Start and end, UTC, ISO 8601.
+    std::string started_at;
+    std::string finished_at;
+    /// Wall-clock runtime, s.
+    double runtime = 0.0;
+};
+
+/// The record of a finished run of `file`: the run (tool, scenario text and hash, settings),
+/// the summary and the histories; y components NaN in 2D.
+db::SoilRunRecord make_soil_record(const SoilFile& file, const mpm::SoilOutcome& outcome,
+                                   const SoilRunTimes& times);
+
+/// The readable summary: run, wall load (peak of the sampled, filtered and single-step load,
+/// when, impulse), deposit (runout, final front and centre of mass, highest point). `origin`
+/// says where the run comes from (the scenario file, or a database).
+void print_soil_summary(std::ostream& out, const db::SoilRunRecord& record,
+                        const std::string& origin);
+
+/// The summary and the sampled history as one JSON document with unit-suffixed keys (ending
+/// in `_per_m` in 2D, where `per_metre_of_width` is true).
+nlohmann::json soil_json(const db::SoilRunRecord& record);
+
+/// The summary as rows of (item, value), item names carrying their units, for CSV.
+Table soil_summary_items(const db::SoilRunRecord& record);
+
+/// The sampled history: time, wall load normal to the wall (mean per interval, filtered),
+/// centre of mass x and z, front, kinetic energy; units in the column names.
+Table soil_history(const db::SoilRunRecord& record);
+
+/// `rockfall query DB summary` on a soil database: the readable summary with the stored run's
+/// times and tool, the JSON document, or CSV items.
+void write_soil_summary(std::ostream& out, QueryFormat format, const std::string& database,
+                        const db::SoilRunRecord& record);
+
+/// `rockfall query DB history`: the sampled history as a table, CSV or JSON rows.
+void write_soil_history(std::ostream& out, QueryFormat format, const std::string& database,
+                        const db::SoilRunRecord& record);
+
+}  // namespace rockfall::app
