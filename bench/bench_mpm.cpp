@@ -1,7 +1,8 @@
 // MPM benchmark: the seed soil flow (scenario C) in 3D, run with 1 and 2 threads.
 // Prints particle-updates per second per core (wall clock, and per CPU second, which is the
 // robust figure on a shared machine), the wall-clock time of the whole scenario and the
-// 2-thread speed-up, with the machine it ran on.
+// 2-thread speed-up, with the machine it ran on and how busy it was (the load average before
+// each run: wall-clock rates and speed-ups mean little when it exceeds the free cores).
 //
 // Usage: bench_mpm [cell_size_m] [duration_s] [max_threads]
 #include "mpm/soil.hpp"
@@ -43,6 +44,12 @@ struct Timing {
     SoilOutcome outcome;
 };
 
+// One-minute load average: runnable processes, ours included once running.
+double load_average() {
+    double load[1] = {0.0};
+    return getloadavg(load, 1) == 1 ? load[0] : -1.0;
+}
+
 Timing run(const SoilScenario& scenario) {
     const double cpu0 = cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
@@ -74,14 +81,15 @@ int main(int argc, char** argv) {
     double single_wall = 0.0;
     for (int threads = 1; threads <= max_threads; ++threads) {
         scenario.numerics.threads = threads;
+        const double load = load_average();
         const Timing t = run(scenario);
         if (threads == 1) {
             single_wall = t.wall;
         }
         std::printf(
-            "threads %d: %ld particles, %ld steps, wall %.2f s, cpu %.2f s; "
+            "threads %d (load average %.1f): %ld particles, %ld steps, wall %.2f s, cpu %.2f s; "
             "%.2f M particle-updates/s/core (wall), %.2f M/s per cpu second; speed-up %.2f\n",
-            threads, t.outcome.particles, t.outcome.steps, t.wall, t.cpu,
+            threads, load, t.outcome.particles, t.outcome.steps, t.wall, t.cpu,
             t.updates / t.wall / threads / 1e6, t.updates / t.cpu / 1e6, single_wall / t.wall);
         std::printf("           peak wall load %.1f N at %.2f s, runout %.2f m past the toe\n",
                     t.outcome.peak_wall_force, t.outcome.peak_wall_force_time,
