@@ -62,9 +62,16 @@ void ThreadPool::worker_loop() {
             relax();
             now = generation_.load(std::memory_order_acquire);
         }
-        while (now == seen) {
-            generation_.wait(seen, std::memory_order_acquire);
-            now = generation_.load(std::memory_order_acquire);
+        if (now == seen) {
+            sleepers_.fetch_add(1, std::memory_order_seq_cst);
+            // Re-read after announcing the sleep: a run() that started before the announcement
+            // may have skipped the notification.
+            now = generation_.load(std::memory_order_seq_cst);
+            while (now == seen) {
+                generation_.wait(seen, std::memory_order_acquire);
+                now = generation_.load(std::memory_order_acquire);
+            }
+            sleepers_.fetch_sub(1, std::memory_order_relaxed);
         }
         seen = now;
         if (stop_.load(std::memory_order_relaxed)) {
@@ -86,8 +93,10 @@ void ThreadPool::run(int count, const std::function<void(int)>& task) {
     count_.store(count, std::memory_order_relaxed);
     done_.store(0, std::memory_order_relaxed);
     ticket_.store(static_cast<std::uint64_t>(generation) << 32, std::memory_order_release);
-    generation_.store(generation, std::memory_order_release);
-    generation_.notify_all();
+    generation_.store(generation, std::memory_order_seq_cst);
+    if (sleepers_.load(std::memory_order_seq_cst) > 0) {
+        generation_.notify_all();
+    }
     work(generation);
     // Every index is claimed; wait for the claimed tasks still running on workers.
     for (int spin = 0; done_.load(std::memory_order_acquire) < count; ++spin) {

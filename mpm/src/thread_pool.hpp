@@ -48,6 +48,9 @@ class ThreadPool {
     std::atomic<std::uint64_t> ticket_{0};
     std::atomic<int> done_{0};
     std::atomic<std::uint32_t> generation_{0};
+    // Workers asleep on generation_ (past their spinning): only then does run() pay for the
+    // wake-up system call.
+    std::atomic<int> sleepers_{0};
     std::atomic<bool> stop_{false};
 };
 
