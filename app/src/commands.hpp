@@ -35,6 +35,10 @@ void register_envelope(CLI::App& app);
 /// sphericities) and optionally its simulated hull as an OBJ file.
 void register_shape(CLI::App& app);
 
+/// `rockfall terrain SCENARIO`: a scenario's terrain mesh (size, extent, height above the
+/// reference profile), written as OBJ; or its profile triangulated as a mesh.
+void register_terrain(CLI::App& app);
+
 /// `rockfall query DB WHAT`: summary, percentiles, exceedance probabilities and the worst
 /// samples of a results database, as text, CSV or JSON.
 void register_query(CLI::App& app);

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     rockfall::app::register_fit(app);
     rockfall::app::register_envelope(app);
     rockfall::app::register_shape(app);
+    rockfall::app::register_terrain(app);
     rockfall::app::register_query(app);
     try {
         app.parse(argc, argv);

@@ -198,9 +198,10 @@ ScenarioFile file_from(std::string text, const std::string& source, const fs::pa
     loaded.sweep = parsed.sweep;
     loaded.has_sweep = parsed.has_sweep;
     // The text must stand alone (results databases keep it): resolve what refers to other
-    // files, base scenarios, mesh files and the sweep's catalogue, by writing every key out
-    // (meshes and named shapes as vertices).
+    // files, base scenarios, mesh files (rocks and terrain) and the sweep's catalogue, by
+    // writing every key out (meshes and named shapes as vertices).
     const bool refers_to_files =
+        loaded.scenario.slope.terrain != nullptr ||
         std::any_of(loaded.scenario.rocks.begin(), loaded.scenario.rocks.end(),
                     [](const engine::RockRelease& rock) { return rock.rock.shape != nullptr; }) ||
         !parsed.sweep.entries.empty();

@@ -1,6 +1,7 @@
 #include "scenario_reader.hpp"
 
 #include "scenario_rock_shape.hpp"
+#include "scenario_terrain.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -239,7 +240,11 @@ engine::Scenario read_scenario(const toml::table& root, const std::string& file,
     r.get("sweep");
     read(r, "name", scenario.name);
     read_fields(r, scenario, scenario_fields);
-    with_table(r, "slope", [&](TableReader& s) { read_slope(s, scenario.slope); });
+    with_table(r, "slope", [&](TableReader& s) {
+        read_slope(s, scenario.slope);
+        // Not in read_slope: the soil solver has no terrain meshes.
+        read_terrain(s, scenario.slope);
+    });
     with_table(r, "materials", [&](TableReader& s) {
         read_material(s, "slope", scenario.materials.slope);
         read_material(s, "bars", scenario.materials.bars);

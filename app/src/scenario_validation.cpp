@@ -2,6 +2,7 @@
 // built in code are held to the same rules as files.
 
 #include "scenario_schema.hpp"
+#include "scenario_terrain.hpp"
 
 #include "app/scenario_file.hpp"
 #include "shapes/rocks.hpp"
@@ -245,6 +246,7 @@ std::vector<ScenarioProblem> find_problems(const engine::Scenario& s, const Sour
     if (s.name.empty()) c.fail("name", "\"\"", "must not be empty");
     c.check_fields(s, "", scenario_fields);
     const bool profile_ok = check_slope(c, s.slope);
+    check_terrain(c, s, profile_ok);
     c.check_fields(s.materials.slope, "materials.slope", material_fields);
     c.check_fields(s.materials.bars, "materials.bars", material_fields);
     c.check_fields(s.materials.side_walls, "materials.side_walls", material_fields);

@@ -3,6 +3,7 @@
 #include "scenario_schema.hpp"
 
 #include "app/scenario_file.hpp"
+#include "shapes/terrain.hpp"
 
 #include <variant>
 
@@ -82,6 +83,23 @@ std::string format_scenario(const engine::Scenario& s) {
     w.list("segments", s.slope.bars.segments, [](int v) { return std::to_string(v); });
     w.header("slope.wall");
     w.fields(s.slope.wall, detail::wall_fields);
+    if (s.slope.terrain) {
+        // The mesh itself, placed and cleaned, so that the text stands alone.
+        const shapes::Terrain& terrain = *s.slope.terrain;
+        w.header("slope.terrain");
+        w.line("name", toml_string(terrain.name()));
+        std::string points;
+        for (const shapes::Vec3& v : terrain.mesh().vertices) {
+            points += "\n    " + value_text(engine::Vec3(v)) + ",";
+        }
+        w.line("vertices", "[" + points + "\n]");
+        std::string corners;
+        for (const auto& [a, b, c] : terrain.mesh().triangles) {
+            corners += "\n    [" + std::to_string(a) + ", " + std::to_string(b) + ", " +
+                       std::to_string(c) + "],";
+        }
+        w.line("triangles", "[" + corners + "\n]");
+    }
 
     const std::pair<std::string_view, const engine::Material*> materials[] = {
         {"materials.slope", &s.materials.slope},
