@@ -148,6 +148,15 @@ void Solver<Dim>::bin_particles() {
     for (const std::int32_t id : w.occupied) {
         w.block_cursor[static_cast<std::size_t>(id)] = 0;
     }
+    w.schedule.resize(w.blocks.size());
+    for (std::size_t b = 0; b < w.blocks.size(); ++b) {
+        w.schedule[b] = static_cast<int>(b);
+    }
+    std::stable_sort(w.schedule.begin(), w.schedule.end(), [&](int a, int b) {
+        const ParticleBlock<Dim>& x = w.blocks[static_cast<std::size_t>(a)];
+        const ParticleBlock<Dim>& y = w.blocks[static_cast<std::size_t>(b)];
+        return x.end - x.begin > y.end - y.begin;
+    });
 
     // Writers of each active node block, colour by colour: a node receives at most one buffer
     // per colour, so it sums its contributions in colour order, the same for any thread count.

@@ -149,7 +149,8 @@ void Solver<Dim>::particles_to_grid(double dt) {
     Workspace& w = *work_;
     const detail::KernelFrame<Dim> frame{grid.origin, grid.h};
     w.buffers.resize(w.blocks.size());
-    w.pool->run(static_cast<int>(w.blocks.size()), [&](int i) {
+    w.pool->run(static_cast<int>(w.blocks.size()), [&](int task) {
+        const int i = w.schedule[static_cast<std::size_t>(task)];
         const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(i)];
         detail::LocalNodes<Dim>& local = w.buffers[static_cast<std::size_t>(i)];
         for (auto& node : local) {
@@ -296,7 +297,8 @@ void Solver<Dim>::grid_to_particles(double dt) {
             using Model = std::conditional_t<std::is_same_v<Params, LinearElastic>,
                                              LinearElasticModel, DruckerPragerModel>;
             const Model model(params);
-            w.pool->run(count, [&](int i) {
+            w.pool->run(count, [&](int task) {
+                const int i = w.schedule[static_cast<std::size_t>(task)];
                 double max_speed_squared = 0.0;
                 double max_density = 0.0;
                 const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(i)];

@@ -60,6 +60,10 @@ struct Solver<Dim>::Workspace {
     // Ids of the particle blocks holding particles this step, ascending.
     std::vector<std::int32_t> occupied;
     std::vector<detail::ParticleBlock<Dim>> blocks;
+    // The order in which threads claim the particle blocks: largest first, so that the last
+    // tasks of a phase are short and the threads finish together (which thread runs a block
+    // never changes a result).
+    std::vector<int> schedule;
     std::array<std::vector<int>, detail::kColours<Dim>> colours;
     // One scatter buffer per entry of `blocks`.
     std::vector<detail::LocalNodes<Dim>> buffers;
