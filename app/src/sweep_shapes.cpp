@@ -29,9 +29,8 @@ struct NamedShapes {
     std::vector<ShapePtr> inline_shapes;
     std::vector<const toml::node*> inline_nodes;
     std::vector<std::size_t> inline_indices;
-    // The catalogue and the text naming it, when given and readable.
+    // The catalogue, when given and readable.
     std::optional<shapes::ShapeCatalogue> catalogue;
-    std::string catalogue_text;
     // Entries loaded so far, by name: an entry named twice is read once.
     std::vector<ShapePtr> loaded;
 
@@ -74,11 +73,6 @@ std::string family_names() {
     return text + ", \"" + std::string(generated_name) + "\"";
 }
 
-bool is_reserved(std::string_view name) {
-    return std::find(risk::reserved_shape_names.begin(), risk::reserved_shape_names.end(), name) !=
-           risk::reserved_shape_names.end();
-}
-
 void read_catalogue_key(TableReader& rock, NamedShapes& named) {
     const toml::node* node = rock.get("catalogue");
     if (node == nullptr) return;
@@ -93,7 +87,6 @@ void read_catalogue_key(TableReader& rock, NamedShapes& named) {
     }
     try {
         named.catalogue = shapes::read_catalogue(resolve_path(*node, text->get(), context));
-        named.catalogue_text = text->get();
     } catch (const shapes::GeometryError& error) {
         context.report(*node, rock.path("catalogue"), describe(*node) + ": " + error.what());
     }
@@ -112,18 +105,20 @@ void read_inline_shapes(TableReader& rock, NamedShapes& named) {
         std::string name;
         read(r, "name", name);
         element.name_node = r.get("name");
+        // read() reports a name that is not a string.
+        const bool text = element.name_node != nullptr && element.name_node->is_string();
         if (element.name_node == nullptr) {
             const Location where = context.sources.find(r.path("name"));
             context.problems.push_back({where.file, where.line, r.path("name"),
                                         "missing: each shape needs a name for kind to draw it"});
-        } else if (name.empty()) {
+        } else if (text && name.empty()) {
             context.report(*element.name_node, r.path("name"), "\"\": must not be empty");
-        } else if (is_reserved(name)) {
+        } else if (text && risk::is_reserved_shape_name(name)) {
             context.report(*element.name_node, r.path("name"),
                            toml_string(name) + ": names a family or kind (" + family_names() +
                                "); give the shape another name");
         } else {
-            element.named = true;
+            element.named = text;
         }
         const toml::node* vertices = r.get("vertices");
         if (vertices == nullptr) {

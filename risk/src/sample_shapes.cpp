@@ -29,11 +29,6 @@ constexpr double generated_radius_allowance = 1.10;
 // needed a second.
 constexpr int max_shape_attempts = 32;
 
-bool reserved(std::string_view name) {
-    return std::find(reserved_shape_names.begin(), reserved_shape_names.end(), name) !=
-           reserved_shape_names.end();
-}
-
 std::string short_number(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.4g", value);
@@ -123,7 +118,7 @@ void check_entry_list(std::vector<SweepProblem>& problems, const SweepSpec& spec
         if (entry->name.empty()) {
             problems.push_back(
                 {kind_key, "entry " + std::to_string(i) + " has no name: name each entry"});
-        } else if (reserved(entry->name)) {
+        } else if (is_reserved_shape_name(entry->name)) {
             problems.push_back({kind_key, "entry " + quoted +
                                               ": sphere, massive, planar, custom and generated "
                                               "name other shapes; rename the entry"});
@@ -227,6 +222,11 @@ void draw_shape(const SweepSpec& spec, const engine::Scenario& base, double u_sh
 }
 
 }  // namespace detail
+
+bool is_reserved_shape_name(std::string_view name) {
+    return std::find(reserved_shape_names.begin(), reserved_shape_names.end(), name) !=
+           reserved_shape_names.end();
+}
 
 std::vector<DrawableShape> drawable_shapes(const SweepSpec& spec, const engine::Scenario& base) {
     std::vector<DrawableShape> drawn;

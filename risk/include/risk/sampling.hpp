@@ -98,6 +98,8 @@ inline constexpr double max_target_sphericity = 0.95;
 /// "generated" (a rock of target sphericity), as samples and results databases name shapes.
 inline constexpr std::array<std::string_view, 5> reserved_shape_names = {
     "sphere", "massive", "planar", "custom", "generated"};
+/// Whether `name` is one of reserved_shape_names.
+bool is_reserved_shape_name(std::string_view name);
 
 /// Lower-case name of a method ("monte_carlo", "latin_hypercube").
 std::string to_string(SweepSpec::Method method);
