@@ -112,6 +112,7 @@ void Solver<Dim>::bin_particles() {
         }
         pb.begin = start;
         pb.end = start + count;
+        pb.first_active = static_cast<std::int32_t>(w.active_slots.size());
         start += count;
         for (int o = 0; o < kColours<Dim>; ++o) {
             IVec<Dim> nb = first_storage;
@@ -148,15 +149,23 @@ void Solver<Dim>::bin_particles() {
     for (const std::int32_t id : w.occupied) {
         w.block_cursor[static_cast<std::size_t>(id)] = 0;
     }
-    w.schedule.resize(w.blocks.size());
+    // Block b's particles are [blocks[b].begin, blocks[b].end): the begins are the running
+    // particle count.
+    w.contribution_cursor.resize(w.blocks.size() + 1);
     for (std::size_t b = 0; b < w.blocks.size(); ++b) {
-        w.schedule[b] = static_cast<int>(b);
+        w.contribution_cursor[b] = w.blocks[b].begin;
     }
-    std::stable_sort(w.schedule.begin(), w.schedule.end(), [&](int a, int b) {
-        const ParticleBlock<Dim>& x = w.blocks[static_cast<std::size_t>(a)];
-        const ParticleBlock<Dim>& y = w.blocks[static_cast<std::size_t>(b)];
-        return x.end - x.begin > y.end - y.begin;
-    });
+    w.contribution_cursor[w.blocks.size()] = n;
+    w.pool->split_by_weight(w.contribution_cursor, w.block_split);
+    // A node block goes to the thread of the first particle block that writes it (blocks list
+    // their new node blocks in block order), so most of the buffers a thread sums in
+    // update_grid are the ones it filled, and most nodes it gathers from are ones it updated.
+    w.slot_split.resize(w.block_split.size());
+    for (std::size_t k = 0; k < w.block_split.size(); ++k) {
+        const auto b = static_cast<std::size_t>(w.block_split[k]);
+        w.slot_split[k] = b < w.blocks.size() ? w.blocks[b].first_active
+                                              : static_cast<int>(w.active_slots.size());
+    }
 
     // Writers of each active node block, colour by colour: a node receives at most one buffer
     // per colour, so it sums its contributions in colour order, the same for any thread count.

@@ -149,8 +149,7 @@ void Solver<Dim>::particles_to_grid(double dt) {
     Workspace& w = *work_;
     const detail::KernelFrame<Dim> frame{grid.origin, grid.h};
     w.buffers.resize(w.blocks.size());
-    w.pool->run(static_cast<int>(w.blocks.size()), [&](int task) {
-        const int i = w.schedule[static_cast<std::size_t>(task)];
+    w.pool->run(w.block_split, [&](int i) {
         const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(i)];
         detail::LocalNodes<Dim>& local = w.buffers[static_cast<std::size_t>(i)];
         for (auto& node : local) {
@@ -190,7 +189,7 @@ void Solver<Dim>::update_grid(double dt) {
         w.slot_impulse.resize(active.size());
     }
     const Vec<Dim> gravity = from_scene<Dim>(settings_.gravity);
-    w.pool->run(count, [&](int i) {
+    w.pool->run(w.slot_split, [&](int i) {
         const auto slot = static_cast<std::size_t>(active[static_cast<std::size_t>(i)]);
         Node<Dim>* nodes = grid.data.data() + slot * kBlockNodes<Dim>;
         for (int j = 0; j < kBlockNodes<Dim>; ++j) {
@@ -297,8 +296,7 @@ void Solver<Dim>::grid_to_particles(double dt) {
             using Model = std::conditional_t<std::is_same_v<Params, LinearElastic>,
                                              LinearElasticModel, DruckerPragerModel>;
             const Model model(params);
-            w.pool->run(count, [&](int task) {
-                const int i = w.schedule[static_cast<std::size_t>(task)];
+            w.pool->run(w.block_split, [&](int i) {
                 double max_speed_squared = 0.0;
                 double max_density = 0.0;
                 const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(i)];

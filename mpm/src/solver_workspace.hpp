@@ -29,6 +29,8 @@ struct ParticleBlock {
     IVec<Dim> first_node;
     int begin;
     int end;
+    // Size of the active-slot list before this block's node blocks were added.
+    std::int32_t first_active;
     std::array<std::int32_t, detail::kColours<Dim>> slots;
 };
 
@@ -60,10 +62,12 @@ struct Solver<Dim>::Workspace {
     // Ids of the particle blocks holding particles this step, ascending.
     std::vector<std::int32_t> occupied;
     std::vector<detail::ParticleBlock<Dim>> blocks;
-    // The order in which threads claim the particle blocks: largest first, so that the last
-    // tasks of a phase are short and the threads finish together (which thread runs a block
-    // never changes a result).
-    std::vector<int> schedule;
+    // Per thread its range of `blocks` (about equal particle counts) and of `active_slots`
+    // (the node blocks its particle blocks write first), computed once per step: a thread handles
+    // the same particles and nodes in every phase (which thread runs a task never changes a
+    // result).
+    std::vector<int> block_split;
+    std::vector<int> slot_split;
     std::array<std::vector<int>, detail::kColours<Dim>> colours;
     // One scatter buffer per entry of `blocks`.
     std::vector<detail::LocalNodes<Dim>> buffers;
