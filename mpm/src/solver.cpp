@@ -284,7 +284,7 @@ void Solver<Dim>::grid_to_particles(double dt) {
     Grid& grid = *grid_;
     Workspace& w = *work_;
     const detail::KernelFrame<Dim> frame{grid.origin, grid.h};
-    const int count = static_cast<int>(w.blocks.size());
+    const int count = static_cast<int>(w.chunks.size());
     // Damping acts on the particles after the transfer, so the boundary impulses of a body at
     // rest are its full reactions.
     const double damping = 1.0 / (1.0 + settings_.damping * dt);
@@ -296,13 +296,14 @@ void Solver<Dim>::grid_to_particles(double dt) {
             using Model = std::conditional_t<std::is_same_v<Params, LinearElastic>,
                                              LinearElasticModel, DruckerPragerModel>;
             const Model model(params);
-            w.pool->run(w.block_split, [&](int i) {
+            w.pool->run(w.chunk_split, [&](int i) {
                 double max_speed_squared = 0.0;
                 double max_density = 0.0;
-                const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(i)];
+                const detail::ParticleChunk& chunk = w.chunks[static_cast<std::size_t>(i)];
+                const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(chunk.block)];
                 detail::LocalNodes<Dim> local;
                 detail::gather_local_nodes<Dim>(grid.data, pb.first_node, pb.slots, local);
-                for (int k = pb.begin; k < pb.end; ++k) {
+                for (int k = chunk.begin; k < chunk.end; ++k) {
                     const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
                     detail::gather_particle<Dim>(frame, pb.first_node, local,
                                                  particles_.position[p], particles_.velocity[p],

@@ -34,6 +34,14 @@ struct ParticleBlock {
     std::array<std::int32_t, detail::kColours<Dim>> slots;
 };
 
+// Particles [begin, end) of the sorted order, all in particle block `block`: the tasks of the
+// grid-to-particles phase, smaller than blocks so that the threads finish together.
+struct ParticleChunk {
+    std::int32_t block;
+    std::int32_t begin;
+    std::int32_t end;
+};
+
 // A particle block's buffer overlapping a storage block: which particle block, and which of
 // its storage blocks (offset bits, as ParticleBlock::slots).
 struct Contribution {
@@ -68,6 +76,8 @@ struct Solver<Dim>::Workspace {
     // result).
     std::vector<int> block_split;
     std::vector<int> slot_split;
+    std::vector<detail::ParticleChunk> chunks;
+    std::vector<int> chunk_split;
     std::array<std::vector<int>, detail::kColours<Dim>> colours;
     // One scatter buffer per entry of `blocks`.
     std::vector<detail::LocalNodes<Dim>> buffers;
