@@ -85,7 +85,7 @@ void write_percentiles(std::ostream& out, QueryFormat format, const std::string&
     }
     const std::string interval = "distribution-free (binomial order statistics)";
     std::vector<std::string> lines = {database + ": percentiles of " + name + " (" + unit +
-                                          ") over the " + population_of(table.quantity),
+                                          ") over " + population_of(table.quantity),
                                       percent_text(table.confidence) +
                                           " % confidence intervals: " + interval +
                                           "; - where the sample is too small for a bound"};

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # sweep_interrupt.sh ROCKFALL SCENARIO WORKDIR: Ctrl-C (SIGINT) during a sweep stores the
-# finished samples, marks the run interrupted and exits 130; --resume then completes it.
+# finished samples, marks the run interrupted and exits 130; --resume then completes it. 600
+# samples take about 10 s on one thread, so the interrupt comes long before the end even on a
+# loaded machine (the first batch is stored after 1 s).
 set -euo pipefail
 rockfall=$1 scenario=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
 db="$work/interrupted.db"
-"$rockfall" sweep "$scenario" --db "$db" --threads 1 --samples 150 >"$work/out.txt" 2>&1 &
+"$rockfall" sweep "$scenario" --db "$db" --threads 1 --samples 600 >"$work/out.txt" 2>&1 &
 pid=$!
 # Wait until some samples are stored, then interrupt.
 for _ in $(seq 100); do
@@ -23,9 +25,9 @@ cat "$work/out.txt"
 grep -q "continue with the same command and --resume" "$work/out.txt"
 [ "$(sqlite3 "$db" "SELECT status FROM run")" = interrupted ]
 stored=$(sqlite3 "$db" "SELECT count(*) FROM samples")
-[ "$stored" -gt 0 ] && [ "$stored" -lt 150 ] || { echo "expected a partial run, got $stored"; exit 1; }
-echo "interrupted with $stored of 150 samples stored"
-"$rockfall" sweep "$scenario" --db "$db" --threads 2 --samples 150 --resume --quiet >/dev/null
-[ "$(sqlite3 "$db" "SELECT count(*) FROM samples")" = 150 ]
+[ "$stored" -gt 0 ] && [ "$stored" -lt 600 ] || { echo "expected a partial run, got $stored"; exit 1; }
+echo "interrupted with $stored of 600 samples stored"
+"$rockfall" sweep "$scenario" --db "$db" --threads 2 --samples 600 --resume --quiet >/dev/null
+[ "$(sqlite3 "$db" "SELECT count(*) FROM samples")" = 600 ]
 [ "$(sqlite3 "$db" "SELECT status FROM run")" = complete ]
-echo "resumed to 150 samples, complete"
+echo "resumed to 600 samples, complete"
