@@ -3,10 +3,13 @@
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
+#include "fit_figure.hpp"
 #include "query_table.hpp"
 #include "soil_report.hpp"
 #include "sweep_record.hpp"
+#include "text_format.hpp"
 
+#include "app/load_history.hpp"
 #include "app/soil_file.hpp"
 #include "db/soil_run.hpp"
 #include "mpm/soil.hpp"
@@ -15,10 +18,12 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
@@ -34,6 +39,8 @@ struct SoilArgs {
     std::string vtk_dir;
     std::string csv;
     std::string db;
+    std::string measured;
+    std::string svg;
 };
 
 // Writes particle frames as DIR/frame_NNNNN.vtk. The solver's callback must not throw, so the
@@ -77,8 +84,79 @@ void write_csv(const fs::path& path, const db::SoilRunRecord& record) {
     file.commit();
 }
 
+// The sampled wall load normal to the wall, as recorded (`filtered` false) or filtered.
+LoadHistory sampled_load(const db::SoilRunRecord& record, bool filtered) {
+    LoadHistory h;
+    h.source = "simulated";
+    h.per_metre = record.dimension == 2;
+    for (const db::SoilLoadSample& s : record.load) {
+        h.time.push_back(s.time);
+        h.load.push_back(filtered ? s.force_filtered[0] : s.force[0]);
+    }
+    return h;
+}
+
+// The run's filter of the sampled wall load, in words.
+std::string filter_text(const db::SoilRunRecord& record) {
+    return record.filter_window > 0.0 ? "filtered by a centred moving average over " +
+                                            fmt("%g", record.filter_window) + " s"
+                                      : "unfiltered";
+}
+
+void print_comparison(std::ostream& out, const HistoryComparison& c, const LoadHistory& measured,
+                      const db::SoilRunRecord& record) {
+    const char* unit = measured.per_metre ? " kN/m" : " kN";
+    const char* impulse_unit = measured.per_metre ? " kN s/m" : " kN s";
+    auto kn = [](double newtons) { return fmt("%.2f", newtons / 1e3); };
+    out << "compared with the measured wall load in " << measured.source << " (" << c.points
+        << " points in t = " << fmt("%g", c.from) << " to " << fmt("%g", c.to)
+        << " s; simulated: the sampled load, " << filter_text(record)
+        << ", both linear between their points):\n"
+        << "  peak: simulated " << kn(c.simulated_peak) << unit << " at "
+        << fmt("%.2f", c.simulated_peak_time) << " s, measured " << kn(c.measured_peak) << unit
+        << " at " << fmt("%.2f", c.measured_peak_time) << " s; simulated / measured "
+        << fmt("%.3f", c.peak_ratio) << '\n'
+        << "  impulse: simulated " << kn(c.simulated_impulse) << impulse_unit << ", measured "
+        << kn(c.measured_impulse) << impulse_unit << "; simulated / measured "
+        << fmt("%.3f", c.impulse_ratio) << '\n'
+        << "  mean load up to the measured peak: simulated / measured "
+        << fmt("%.3f", c.loading_ratio) << '\n'
+        << "  mean load after the measured peak: simulated / measured "
+        << fmt("%.3f", c.after_peak_ratio) << '\n'
+        << "  RMS difference " << kn(c.rms_difference) << unit << " ("
+        << fmt("%.1f", 100.0 * c.rms_difference / c.measured_peak) << " % of the measured peak)\n";
+}
+
+nlohmann::json comparison_json(const HistoryComparison& c, const LoadHistory& measured) {
+    const std::string u = measured.per_metre ? "_per_m" : "";
+    auto number = [](double v) {
+        return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v);
+    };
+    return {{"measured_file", measured.source},
+            {"points", c.points},
+            {"from_s", c.from},
+            {"to_s", c.to},
+            {"simulated_peak_N" + u, c.simulated_peak},
+            {"simulated_peak_time_s", c.simulated_peak_time},
+            {"measured_peak_N" + u, c.measured_peak},
+            {"measured_peak_time_s", c.measured_peak_time},
+            {"peak_ratio", number(c.peak_ratio)},
+            {"simulated_impulse_N_s" + u, c.simulated_impulse},
+            {"measured_impulse_N_s" + u, c.measured_impulse},
+            {"impulse_ratio", number(c.impulse_ratio)},
+            {"loading_ratio", number(c.loading_ratio)},
+            {"after_peak_ratio", number(c.after_peak_ratio)},
+            {"rms_difference_N" + u, c.rms_difference}};
+}
+
 void run_soil_command(const SoilArgs& args) {
     const SoilFile file = load_soil_scenario(args.scenario);
+    // Read the measured record and refuse a mismatch now rather than after the run.
+    std::optional<LoadHistory> measured;
+    if (!args.measured.empty()) {
+        measured = read_measured_history(args.measured);
+        check_comparable(file.scenario.numerics.dimension == 2, *measured);
+    }
     // Refuse an existing or unwritable database now rather than after the run.
     if (!args.db.empty()) db::check_new_database(args.db);
     std::unique_ptr<VtkFrames> frames;
@@ -102,15 +180,32 @@ void run_soil_command(const SoilArgs& args) {
     const db::SoilRunRecord record = make_soil_record(file, outcome, times);
     if (!args.csv.empty()) write_csv(args.csv, record);
     if (!args.db.empty()) db::write_soil_run(args.db, record);
+    const LoadHistory filtered = sampled_load(record, true);
+    std::optional<HistoryComparison> comparison;
+    if (measured) comparison = compare_histories(filtered, *measured);
+    if (!args.svg.empty()) {
+        write_svg(args.svg,
+                  load_history_plot(
+                      "Wall load history: " + fs::path(args.scenario).stem().string(),
+                      sampled_load(record, false),
+                      "simulated, per " + fmt("%g", record.sample_interval) + " s", filtered,
+                      record.filter_window > 0.0
+                          ? "simulated, " + fmt("%g", record.filter_window) + " s moving average"
+                          : "simulated, unfiltered",
+                      measured ? &*measured : nullptr));
+    }
 
     if (args.json) {
         nlohmann::json document = soil_json(record);
         document["scenario_file"] = args.scenario;
         if (!args.db.empty()) document["database"] = args.db;
+        if (comparison) document["measured_comparison"] = comparison_json(*comparison, *measured);
         std::cout << document.dump(2) << '\n';
         return;
     }
     print_soil_summary(std::cout, record, args.scenario);
+    if (comparison) print_comparison(std::cout, *comparison, *measured, record);
+    if (!args.svg.empty()) std::cout << "wall-load figure written to " << args.svg << '\n';
     if (frames) std::cout << frames->count() << " VTK frames written to " << args.vtk_dir << '\n';
     if (!args.csv.empty()) std::cout << "wall-load history written to " << args.csv << '\n';
     if (!args.db.empty()) std::cout << "run and histories stored in " << args.db << '\n';
@@ -135,6 +230,13 @@ void register_soil(CLI::App& app) {
     cmd->add_option("--db", args->db,
                     "Store the run, its wall-load, motion and deposit histories in this new "
                     "results database (never overwritten; read it with `rockfall query`)");
+    cmd->add_option("--measured", args->measured,
+                    "Compare the wall load with a measured history: CSV with time_s and one of "
+                    "load_kN, load_N (3D) or load_kN_per_m, load_N_per_m (2D)")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--svg", args->svg,
+                    "Write a figure of the wall-load history (with the measured one if given) "
+                    "to this SVG file");
     cmd->callback([args] { run_soil_command(*args); });
 }
 

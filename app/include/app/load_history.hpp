@@ -1,0 +1,87 @@
+#pragma once
+/// Wall-load time histories: a measured record read from CSV, its comparison with a simulated
+/// soil flow (seed 000, Figure 10: the paper compares its MPM wall load with the load cells'
+/// record, finding the model larger at first and about equal later), and the figure.
+///
+/// Measured CSV columns, named in the header in any order (other columns are ignored):
+///   time_s                      time since the release, s (finite, >= 0, increasing)
+///   load_kN | load_N            wall load normal to the wall, total over the wall (3D runs)
+///   load_kN_per_m | load_N_per_m  the same per metre of width (2D plane-strain runs)
+/// Exactly one load column; its unit is in its name.
+
+#include "app/csv_table.hpp"
+#include "app/svg_plot.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rockfall::app {
+
+/// A wall-load history: loads normal to the wall at increasing times.
+struct LoadHistory {
+    /// Where it comes from, for messages and legends (a file name, "simulated").
+    std::string source;
+    /// Times, s (finite, increasing).
+    std::vector<double> time;
+    /// Loads, N, or N/m when `per_metre` (finite; same size as `time`).
+    std::vector<double> load;
+    /// Whether the loads are per metre of width (a 2D plane-strain run).
+    bool per_metre = false;
+};
+
+/// The measured history of a CSV table, loads in N (or N/m). Throws CsvError naming the file,
+/// line and column for a missing or doubled load column, text in a numeric field, a negative
+/// or non-increasing time, and for fewer than two rows.
+LoadHistory measured_history(const CsvTable& table);
+
+/// measured_history(CsvTable::read(path)).
+LoadHistory read_measured_history(const std::filesystem::path& path);
+
+/// A simulated history against a measured one, over the times both cover. Both are taken as
+/// linear between their points and compared at the union of their times, so that a sparse
+/// record (points read off a published figure) counts as well as a dense one; impulses are
+/// exact integrals of those piecewise-linear loads. The measured peak splits the record into the
+/// loading phase (up to the peak) and the rest, as seed 000 discusses the two separately.
+struct HistoryComparison {
+    /// The times both histories cover, s.
+    double from = 0.0;
+    double to = 0.0;
+    /// Measured points inside [from, to] (>= 2).
+    int points = 0;
+    /// Peaks inside [from, to] (N or N/m) and their times (s).
+    double simulated_peak = 0.0;
+    double simulated_peak_time = 0.0;
+    double measured_peak = 0.0;
+    double measured_peak_time = 0.0;
+    /// simulated_peak / measured_peak (NaN when the measured peak is not > 0).
+    double peak_ratio = 0.0;
+    /// Impulses over [from, to], N s (N s/m), and simulated / measured.
+    double simulated_impulse = 0.0;
+    double measured_impulse = 0.0;
+    double impulse_ratio = 0.0;
+    /// Mean simulated load over mean measured load up to the measured peak, and after it (NaN
+    /// where the measured mean is not > 0 or the phase has no length).
+    double loading_ratio = 0.0;
+    double after_peak_ratio = 0.0;
+    /// Root mean square of simulated - measured over [from, to] (at the union of the times),
+    /// N (N/m).
+    double rms_difference = 0.0;
+};
+
+/// Throws std::invalid_argument unless `measured` is per metre exactly when the simulated
+/// loads are (a 2D run); the message says which column a 2D or 3D run needs.
+void check_comparable(bool simulated_per_metre, const LoadHistory& measured);
+
+/// Compares `simulated` with `measured`. Throws std::invalid_argument when check_comparable
+/// fails or when they share fewer than two measured times.
+HistoryComparison compare_histories(const LoadHistory& simulated, const LoadHistory& measured);
+
+/// The figure: the simulated load as sampled (thin grey), filtered (thick) and, when given,
+/// the measured record (dashed red, labelled with its file name), in kN (kN/m) against time in
+/// s, titled `title`; the labels name the sampling and the filter in the legend.
+Plot load_history_plot(const std::string& title, const LoadHistory& sampled,
+                       const std::string& sampled_label, const LoadHistory& filtered,
+                       const std::string& filtered_label, const LoadHistory* measured);
+
+}  // namespace rockfall::app
