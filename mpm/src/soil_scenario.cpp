@@ -88,30 +88,6 @@ void check_slope(const shapes::SlopeSpec& slope, Problems& problems) {
     }
 }
 
-// The slab boxes of two segments meeting at a concave kink (steeper above) leave a wedge-shaped
-// gap below the surface; extending both by thickness tan(dtheta / 2) closes it without
-// raising either surface.
-void close_concave_kinks(const shapes::SlopeSpec& spec, std::vector<StaticBoundary>& statics) {
-    std::vector<StaticBoundary*> slabs(spec.segments.size(), nullptr);
-    for (StaticBoundary& b : statics) {
-        if (b.box.role == shapes::SurfaceRole::slope && b.box.segment >= 0) {
-            slabs[static_cast<std::size_t>(b.box.segment)] = &b;
-        }
-    }
-    for (std::size_t i = 1; i < spec.segments.size(); ++i) {
-        const double turn = spec.segments[i - 1].angle_deg - spec.segments[i].angle_deg;
-        if (turn <= 0.0 || slabs[i - 1] == nullptr || slabs[i] == nullptr) {
-            continue;
-        }
-        const double extra = spec.thickness * std::tan(0.5 * radians(turn));
-        for (const auto& [slab, direction] :
-             {std::pair{slabs[i - 1], 1.0}, std::pair{slabs[i], -1.0}}) {
-            slab->box.half_extents.x() += 0.5 * extra;
-            slab->box.center += direction * 0.5 * extra * slab->box.rotation.col(0);
-        }
-    }
-}
-
 shapes::OrientedBox box_between(const Vec3& lo, const Vec3& hi) {
     shapes::OrientedBox box;
     box.center = 0.5 * (lo + hi);
@@ -203,7 +179,6 @@ SoilModel<Dim> build_soil_model(const SoilScenario& scenario) {
         b.friction_coefficient = mu_basal;
         statics.push_back(b);
     }
-    close_concave_kinks(scenario.slope, statics);
 
     const SoilRelease& r = scenario.release;
     const Vec3 hinge(slope.profile().front().x() + r.hinge_offset_x, 0.0,

@@ -65,6 +65,18 @@ double kink_overlap(const SlopeSegment& a, const SlopeSegment& b, double reach) 
     return reach * std::tan(0.5 * std::abs(radians(b.angle_deg - a.angle_deg)));
 }
 
+// How far a slab reaches past a kink under its neighbour. Where the slope flattens (a concave
+// kink) two slabs cut square to their surfaces leave a wedge-shaped gap below the kink, and
+// the end face of the lower slab stands at the kink inside that gap: a rock whose corner
+// crosses the kink is then separated through that face, pushed back upslope, instead of up
+// through the surface (planar rocks lost most of their speed there). Reaching
+// thickness tan(dtheta/2) past the kink, both slabs meet on the bisecting plane: the gap is
+// closed and the end faces lie under the neighbour's surface, which neither extension raises.
+// Where the slope steepens (convex) the slabs already overlap below the kink.
+double slab_overlap(const SlopeSegment& a, const SlopeSegment& b, double thickness) {
+    return b.angle_deg < a.angle_deg ? kink_overlap(a, b, thickness) : 0.0;
+}
+
 void check_spec([[maybe_unused]] const SlopeSpec& spec) {
     assert(!spec.segments.empty());
     for (const SlopeSegment& segment : spec.segments) {
@@ -137,10 +149,13 @@ Slope::Slope(const SlopeSpec& spec) : spec_(spec) {
     const double half_width = 0.5 * spec_.width;
     const Range full_width{-half_width, half_width};
     for (int i = 0; i < count; ++i) {
-        const SlopeSegment& segment = segments[static_cast<std::size_t>(i)];
-        solids_.push_back(segment_box(segment, profile_[static_cast<std::size_t>(i)],
-                                      {0.0, segment.length}, full_width, {-spec_.thickness, 0.0},
-                                      SurfaceRole::slope, i));
+        const auto u = static_cast<std::size_t>(i);
+        const SlopeSegment& segment = segments[u];
+        const double before = i > 0 ? slab_overlap(segments[u - 1], segment, spec_.thickness) : 0.0;
+        const double after =
+            i + 1 < count ? slab_overlap(segment, segments[u + 1], spec_.thickness) : 0.0;
+        solids_.push_back(segment_box(segment, profile_[u], {-before, segment.length + after},
+                                      full_width, {-spec_.thickness, 0.0}, SurfaceRole::slope, i));
     }
 
     if (spec_.bars.enabled) {

@@ -168,28 +168,44 @@ TEST_CASE("rocks on the triangulated seed profile run out as on the box slope",
         CHECK(mesh.wall_hits.size() == box.wall_hits.size());
     }
 
-    // Tumbling blocks are chaotic: compare the mean speed at the toe over seeds, paired, against
-    // three standard errors of the mean difference.
-    scenario.slope.bars.enabled = true;
-    scenario.rocks.front().rock.kind = shapes::RockKind::massive;
-    scenario.rocks.front().release.random_orientation = true;
-    constexpr int kSeeds = 40;
-    double sum = 0.0;
-    double squares = 0.0;
-    double box_sum = 0.0;
-    for (int seed = 1; seed <= kSeeds; ++seed) {
-        scenario.slope.terrain = nullptr;
-        const double box = engine::simulate(scenario, seed).rocks.front().stations[0].speed;
-        scenario.slope.terrain = terrain;
-        const double mesh = engine::simulate(scenario, seed).rocks.front().stations[0].speed;
-        sum += mesh - box;
-        squares += (mesh - box) * (mesh - box);
-        box_sum += box;
+    // Tumbling blocks and slabs are chaotic: compare the mean speed at the toe over seeds,
+    // paired, against three standard errors of the mean difference. Planar slabs with bars off
+    // are the case that showed the wedge gap below the box slope's concave kinks: before the
+    // slabs met there, their mean toe speed was 0.29 m/s on the boxes against 1.78 m/s on the
+    // mesh (60 seeds).
+    struct Case {
+        shapes::RockKind kind;
+        bool bars;
+    };
+    for (const Case c :
+         {Case{shapes::RockKind::massive, true}, Case{shapes::RockKind::planar, false}}) {
+        scenario.slope.bars.enabled = c.bars;
+        scenario.rocks.front().rock.kind = c.kind;
+        scenario.rocks.front().release.random_orientation = true;
+        constexpr int kSeeds = 40;
+        double sum = 0.0;
+        double squares = 0.0;
+        double box_sum = 0.0;
+        const auto toe_speed = [&](std::uint64_t seed) {
+            const engine::StationCrossing& toe =
+                engine::simulate(scenario, seed).rocks.front().stations[0];
+            return toe.reached ? toe.speed : 0.0;
+        };
+        for (int seed = 1; seed <= kSeeds; ++seed) {
+            scenario.slope.terrain = nullptr;
+            const double box = toe_speed(static_cast<std::uint64_t>(seed));
+            scenario.slope.terrain = terrain;
+            const double mesh = toe_speed(static_cast<std::uint64_t>(seed));
+            sum += mesh - box;
+            squares += (mesh - box) * (mesh - box);
+            box_sum += box;
+        }
+        const double mean = sum / kSeeds;
+        const double deviation = std::sqrt((squares - kSeeds * mean * mean) / (kSeeds - 1));
+        INFO(shapes::to_string(c.kind)
+             << ", bars " << (c.bars ? "on" : "off") << ": mean toe speed on the box slope "
+             << box_sum / kSeeds << " m/s, mesh minus box " << mean << " m/s, standard error "
+             << deviation / std::sqrt(kSeeds));
+        CHECK(std::abs(mean) < 3.0 * deviation / std::sqrt(kSeeds));
     }
-    const double mean = sum / kSeeds;
-    const double deviation = std::sqrt((squares - kSeeds * mean * mean) / (kSeeds - 1));
-    INFO("mean toe speed on the box slope " << box_sum / kSeeds << " m/s, mesh minus box " << mean
-                                            << " m/s, standard error "
-                                            << deviation / std::sqrt(kSeeds));
-    CHECK(std::abs(mean) < 3.0 * deviation / std::sqrt(kSeeds));
 }

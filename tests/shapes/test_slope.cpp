@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -138,11 +139,18 @@ TEST_CASE("slope slabs: top face is the surface, slab thickness below", "[shapes
     const Slope slope{spec};
     const auto slabs = solids_with(slope, SurfaceRole::slope);
     REQUIRE(slabs.size() == 3);
+    // Both kinks of the seed profile are concave (43 -> 29 -> 0 deg): each slab reaches
+    // thickness tan(dtheta / 2) past them, so neighbours meet on the bisecting plane.
+    constexpr double pi = std::numbers::pi;
+    const double first_kink = spec.thickness * std::tan(0.5 * (43.0 - 29.0) * pi / 180.0);
+    const double second_kink = spec.thickness * std::tan(0.5 * 29.0 * pi / 180.0);
+    const std::array<double, 3> extra{first_kink, first_kink + second_kink, second_kink};
     double s = 0.0;
     for (int i = 0; i < 3; ++i) {
         CHECK(slabs[i].segment == i);
         const double length = spec.segments[static_cast<std::size_t>(i)].length;
-        CHECK_THAT(slabs[i].half_extents.x(), WithinRel(0.5 * length, 1e-12));
+        CHECK_THAT(slabs[i].half_extents.x(),
+                   WithinRel(0.5 * (length + extra[static_cast<std::size_t>(i)]), 1e-12));
         const Vec3 middle = slope.point_at_distance(s + 0.5 * length);
         const Vec3 n = slope.surface_normal(middle.x());
         for (const double y : {-2.4, 0.0, 2.4}) {
@@ -156,11 +164,41 @@ TEST_CASE("slope slabs: top face is the surface, slab thickness below", "[shapes
         }
         s += length;
     }
-    // The union of slabs has the profile as its top: points just above and below the surface.
+    // The union of slabs has the profile as its top: points just above and below the surface,
+    // the kinks included.
+    std::vector<double> xs;
     for (double x = 0.05; x < slope.end_x(); x += 0.5) {
+        xs.push_back(x);
+    }
+    for (std::size_t k = 1; k + 1 < slope.profile().size(); ++k) {
+        for (const double dx : {-1e-2, 0.0, 1e-2}) {
+            xs.push_back(slope.profile()[k].x() + dx);
+        }
+    }
+    for (const double x : xs) {
         const Vec3 on(x, 1.0, slope.surface_height(x));
         CHECK(distance_to_union(slabs, on + Vec3(0, 0, 1e-3)) > 0.0);
         CHECK(distance_to_union(slabs, on - Vec3(0, 0, 1e-3)) < 0.0);
+    }
+}
+
+TEST_CASE("slope slabs leave no gap below a concave kink", "[shapes]") {
+    // Slabs cut square to their surfaces open a wedge below a kink where the slope flattens; a
+    // rock corner crossing the kink was then pushed back through the lower slab's end face.
+    const SlopeSpec spec;
+    const Slope slope{spec};
+    const auto slabs = solids_with(slope, SurfaceRole::slope);
+    for (std::size_t k = 1; k + 1 < slope.profile().size(); ++k) {
+        const Vec3 kink(slope.profile()[k].x(), 0.0, slope.profile()[k].y());
+        const Vec3 down = -(slabs[k - 1].rotation.col(2) + slabs[k].rotation.col(2)).normalized();
+        // Along the bisector, and a little to either side of it, down to the slabs' depth.
+        const Vec3 along = slabs[k].rotation.col(0);
+        for (double depth = 0.02; depth < 0.95 * spec.thickness; depth += 0.02) {
+            for (const double side : {-0.01, 0.0, 0.01}) {
+                INFO("kink " << k << ", depth " << depth << " m, offset " << side << " m");
+                CHECK(distance_to_union(slabs, kink + depth * down + side * along) < 0.0);
+            }
+        }
     }
 }
 
