@@ -1,6 +1,7 @@
 #pragma once
 // Custom rock shapes in scenario files: the keys `mesh`, `mesh_scale`, `catalogue`, `entry`,
-// `vertices`, `shape_name` and `long_axis` of a [[rocks]] table (README, "Rock shapes").
+// `vertices`, `shape_name` and `long_axis` of a [[rocks]] table (docs/scenarios.md, "Rocks from
+// meshes, catalogues and generators").
 
 #include "scenario_reader.hpp"
 

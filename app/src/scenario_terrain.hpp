@@ -1,7 +1,7 @@
 #pragma once
-// Terrain meshes in scenario files: the [slope.terrain] table (README, "Terrain from files").
-// Its keys are `mesh` (a mesh file, relative to the scenario file that names it) or `vertices`
-// and `triangles` (inline, as the writer stores them), and `scale`, `offset`, `name`.
+// Terrain meshes in scenario files: the [slope.terrain] table (docs/scenarios.md, "Terrain from
+// files"). Its keys are `mesh` (a mesh file, relative to the scenario file that names it) or
+// `vertices` and `triangles` (inline, as the writer stores them), and `scale`, `offset`, `name`.
 
 #include "scenario_reader.hpp"
 #include "scenario_schema.hpp"

@@ -201,7 +201,8 @@ void check_rock(Checker& c, const engine::Scenario& s, std::size_t index, bool p
                        format_number(radius) + " m)");
         }
     }
-    // The compliant wall contact takes its damping from the mean restitution (ln e, README).
+    // The compliant wall contact takes its damping from the mean restitution (ln e,
+    // docs/scenarios.md).
     const double mean_restitution =
         0.5 * (rock.rock.material.restitution + s.materials.wall.restitution);
     if (material_ok && s.slope.wall.enabled && mean_restitution <= 0.0) {

@@ -1,4 +1,4 @@
-// Scenario -> complete TOML document, in the order the README documents the keys.
+// Scenario -> complete TOML document, in the order docs/scenarios.md documents the keys.
 
 #include "scenario_schema.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The results database schema, version 1 (documented in schema_v1.md and the README).
+// The results database schema, version 1 (documented in docs/database.md).
 
 #include <array>
 #include <string_view>

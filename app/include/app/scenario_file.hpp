@@ -1,8 +1,8 @@
 #pragma once
 /// Scenario files: TOML, SI units, every value defaulted and validated at load time.
 ///
-/// Layout (README, "Scenario files", lists every key with unit, default and range): top-level
-/// `name`, `extends`, `gravity`, `stations`; tables `[slope]` (with `[[slope.segments]]`,
+/// Layout (docs/scenarios.md, "Scenario files", lists every key with unit, default and range):
+/// top-level `name`, `extends`, `gravity`, `stations`; tables `[slope]` (with `[[slope.segments]]`,
 /// `[slope.side_walls]`, `[slope.bars]`, `[slope.wall]`), `[materials.slope|bars|side_walls|
 /// wall]`, `[wall_contact]`, `[[rocks]]` (with `[rocks.material]`, `[rocks.release]`),
 /// `[numerics]`, and `[sweep]` (what a sweep varies, risk::SweepSpec). Keys are the field names of

@@ -1,7 +1,7 @@
 #pragma once
 /// The results database of a sweep: one SQLite file per run, written by the sweep and read by
-/// `rockfall query`, `sqlite3` and pandas. The schema is documented in the README ("Results
-/// database"); every column name carries its unit.
+/// `rockfall query`, `sqlite3` and pandas. The schema is documented in docs/database.md (summary in
+/// docs/sweeps.md, "Results database"); every column name carries its unit.
 ///
 /// Safety: WAL journal, one transaction per batch, so a crash or kill at any moment leaves a
 /// valid file holding whole samples only. A file is ours when its SQLite application_id is

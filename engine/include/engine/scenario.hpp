@@ -15,7 +15,7 @@ namespace rockfall::engine {
 using Vec3 = Eigen::Vector3d;
 
 /// Contact coefficients of one surface or rock material. A contact between two materials uses
-/// the arithmetic mean of their values (see README, "Contact model").
+/// the arithmetic mean of their values (see docs/scenarios.md, "Contact model").
 struct Material {
     /// Coulomb friction coefficient, in [0, 2].
     double friction = 0.6;
