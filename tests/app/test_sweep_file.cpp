@@ -142,7 +142,8 @@ TEST_CASE("the Latin hypercube sample overrides whole distributions of its base"
 }
 
 TEST_CASE("the resolved text of a sweep reads back to the same spec", "[app][sweep]") {
-    for (const char* name : {"seed_sweep.toml", "seed_sweep_lhs.toml"}) {
+    for (const char* name :
+         {"seed_sweep.toml", "seed_sweep_lhs.toml", "seed_sweep_calibrated_wall.toml"}) {
         INFO(name);
         const ScenarioFile file = rockfall::app::load_scenario(samples / name);
         CHECK_THAT(file.text, Contains("[sweep]"));
@@ -152,6 +153,20 @@ TEST_CASE("the resolved text of a sweep reads back to the same spec", "[app][swe
         CHECK(rockfall::app::format_scenario(again.scenario) ==
               rockfall::app::format_scenario(file.scenario));
     }
+}
+
+TEST_CASE("the calibrated-wall sweep differs from the seed sweep in the wall facing only",
+          "[app][sweep]") {
+    const ScenarioFile seed = rockfall::app::load_scenario(samples / "seed_sweep.toml");
+    ScenarioFile calibrated =
+        rockfall::app::load_scenario(samples / "seed_sweep_calibrated_wall.toml");
+    CHECK(calibrated.scenario.wall_contact.wall_youngs_modulus == 2.95e9);
+    CHECK(same(calibrated.sweep, seed.sweep));
+    calibrated.scenario.wall_contact.wall_youngs_modulus =
+        seed.scenario.wall_contact.wall_youngs_modulus;
+    calibrated.scenario.name = seed.scenario.name;
+    CHECK(rockfall::app::format_scenario(calibrated.scenario) ==
+          rockfall::app::format_scenario(seed.scenario));
 }
 
 TEST_CASE("a scenario without [sweep] has the spec that varies nothing", "[app][sweep]") {
