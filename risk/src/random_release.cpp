@@ -1,5 +1,7 @@
 #include "risk/random_release.hpp"
 
+#include "validation.hpp"
+
 #include "shapes/random.hpp"
 
 #include <cmath>
@@ -11,9 +13,7 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-void require(bool condition, const std::string& message) {
-    if (!condition) throw std::invalid_argument(message);
-}
+using detail::require;
 
 }  // namespace
 

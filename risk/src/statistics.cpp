@@ -1,5 +1,7 @@
 #include "risk/statistics.hpp"
 
+#include "validation.hpp"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -14,9 +16,7 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-void require(bool condition, const std::string& message) {
-    if (!condition) throw std::invalid_argument(message);
-}
+using detail::require;
 
 void require_confidence(double confidence) {
     require(confidence > 0.0 && confidence < 1.0,

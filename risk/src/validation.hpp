@@ -1,12 +1,18 @@
 #pragma once
-// Input checks shared by the design formulas: one message format naming field, value, unit
-// and allowed range, so every formula reports bad input the same way.
+// Input checks shared by the risk sources: one message format naming field, value, unit and
+// allowed range, so every formula reports bad input the same way.
 
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace rockfall::risk::detail {
+
+/// Throws std::invalid_argument with `message` unless `condition` holds.
+inline void require(bool condition, const std::string& message) {
+    if (!condition) throw std::invalid_argument(message);
+}
 
 /// Throws std::invalid_argument "FIELD = VALUE UNIT: must be finite and > 0" unless value is.
 inline void require_positive(const char* field, double value, const char* unit) {
