@@ -1,9 +1,10 @@
+#include "risk_test_support.hpp"
+
 #include "risk/distribution.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <random>
 #include <stdexcept>
@@ -18,25 +19,9 @@ using Family = risk::Distribution::Family;
 
 namespace {
 
-constexpr double infinity = std::numeric_limits<double>::infinity();
-
-risk::Distribution uniform(double min, double max) {
-    risk::Distribution d;
-    d.family = Family::uniform;
-    d.min = min;
-    d.max = max;
-    return d;
-}
-
-risk::Distribution normal(double mean, double sd, double min = -infinity, double max = infinity) {
-    risk::Distribution d;
-    d.family = Family::normal;
-    d.mean = mean;
-    d.sd = sd;
-    d.min = min;
-    d.max = max;
-    return d;
-}
+using test::infinity;
+using test::normal;
+using test::uniform;
 
 risk::Distribution lognormal(double mean, double sd, double min = -infinity,
                              double max = infinity) {

@@ -1,3 +1,5 @@
+#include "risk_test_support.hpp"
+
 #include "app/scenario_file.hpp"
 #include "risk/sampling.hpp"
 #include "shapes/slope.hpp"
@@ -18,30 +20,15 @@ using Catch::Matchers::Contains;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using namespace rockfall;
-using Family = risk::Distribution::Family;
 using shapes::RockKind;
 
 namespace {
 
+using test::normal;
+using test::problem_keys;
+using test::uniform;
+
 constexpr double deg = 3.14159265358979323846 / 180.0;
-
-risk::Distribution uniform(double min, double max) {
-    risk::Distribution d;
-    d.family = Family::uniform;
-    d.min = min;
-    d.max = max;
-    return d;
-}
-
-risk::Distribution normal(double mean, double sd, double min, double max) {
-    risk::Distribution d;
-    d.family = Family::normal;
-    d.mean = mean;
-    d.sd = sd;
-    d.min = min;
-    d.max = max;
-    return d;
-}
 
 // The population of the 200-rock runout check (risk::random_rock_scenario): the seed's three
 // shapes equally often, 0.2-0.4 m, random orientation, anywhere across the width.
@@ -91,14 +78,6 @@ bool same(const risk::SampleInputs& a, const risk::SampleInputs& b) {
            a.release_distance == b.release_distance && a.release_lateral == b.release_lateral &&
            a.speed == b.speed && a.spin == b.spin && a.orientation_deg == b.orientation_deg &&
            a.mass == b.mass;
-}
-
-std::vector<std::string> problem_keys(const risk::SweepSpec& spec, const engine::Scenario& base) {
-    std::vector<std::string> keys;
-    for (const risk::SweepProblem& problem : risk::find_problems(spec, base)) {
-        keys.push_back(problem.key);
-    }
-    return keys;
 }
 
 bool has(const std::vector<std::string>& keys, const std::string& key) {

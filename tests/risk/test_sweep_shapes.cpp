@@ -1,6 +1,8 @@
 // Sweeps over named shapes (catalogue entries) and generated rocks of a target sphericity:
 // frequencies, targets met, reproducibility, rebuilding a sample's shape, and bad specs.
 
+#include "risk_test_support.hpp"
+
 #include "app/scenario_file.hpp"
 #include "risk/sampling.hpp"
 #include "shapes/measures.hpp"
@@ -29,13 +31,9 @@ using shapes::RockKind;
 
 namespace {
 
-risk::Distribution uniform(double min, double max) {
-    risk::Distribution d;
-    d.family = Family::uniform;
-    d.min = min;
-    d.max = max;
-    return d;
-}
+using test::problem_keys;
+using test::problem_text;
+using test::uniform;
 
 std::shared_ptr<const shapes::CustomShape> named(const std::string& name,
                                                  shapes::ConvexPolyhedron hull) {
@@ -62,22 +60,6 @@ risk::SweepSpec mixed(const engine::Scenario& base, Method method, std::int64_t 
 
 std::string shape_of(const risk::SampleInputs& s) {
     return s.kind == RockKind::custom ? s.shape : std::string(shapes::to_string(s.kind));
-}
-
-std::vector<std::string> problem_keys(const risk::SweepSpec& spec, const engine::Scenario& base) {
-    std::vector<std::string> keys;
-    for (const risk::SweepProblem& problem : risk::find_problems(spec, base)) {
-        keys.push_back(problem.key);
-    }
-    return keys;
-}
-
-std::string problem_text(const risk::SweepSpec& spec, const engine::Scenario& base) {
-    std::string text;
-    for (const risk::SweepProblem& problem : risk::find_problems(spec, base)) {
-        text += problem.key + " = " + problem.message + "\n";
-    }
-    return text;
 }
 
 }  // namespace
