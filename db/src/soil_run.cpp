@@ -7,6 +7,7 @@
 #include "sqlite.hpp"
 
 #include <array>
+#include <initializer_list>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -60,21 +61,23 @@ void insert_summary(sqlite3* db, const fs::path& path, const SoilRunRecord& r, b
     binder.real(r.runout_x).real(r.runout_past_toe).run();
 }
 
-// x, y, z of a force in the soil tables' column order: the plain columns x, y, z in 3D, the
-// per-metre columns x, z in 2D (y is not part of a plane-strain section).
-void bind_force(sql::Binder& binder, const SceneVector& f, bool per_metre) {
-    if (per_metre) {
-        binder.null().null().null();
-    } else {
-        binder.real(f[0]).real(f[1]).real(f[2]);
+// Forces in the soil tables' column order: the plain columns x, y, z of every force, then the
+// per-metre columns x, z of every force; the plain ones filled in 3D, the per-metre ones in 2D
+// (y is not part of a plane-strain section), NULL in the other.
+void bind_forces(sql::Binder& binder, std::initializer_list<SceneVector> forces, bool per_metre) {
+    for (const SceneVector& f : forces) {
+        if (per_metre) {
+            binder.null().null().null();
+        } else {
+            binder.real(f[0]).real(f[1]).real(f[2]);
+        }
     }
-}
-
-void bind_force_per_metre(sql::Binder& binder, const SceneVector& f, bool per_metre) {
-    if (per_metre) {
-        binder.real(f[0]).real(f[2]);
-    } else {
-        binder.null().null();
+    for (const SceneVector& f : forces) {
+        if (per_metre) {
+            binder.real(f[0]).real(f[2]);
+        } else {
+            binder.null().null();
+        }
     }
 }
 
@@ -88,10 +91,7 @@ void insert_histories(sqlite3* db, const fs::path& path, const SoilRunRecord& r,
     for (const SoilLoadSample& s : r.load) {
         sql::Binder binder(load);
         binder.real(s.time);
-        bind_force(binder, s.force, per_metre);
-        bind_force(binder, s.force_filtered, per_metre);
-        bind_force_per_metre(binder, s.force, per_metre);
-        bind_force_per_metre(binder, s.force_filtered, per_metre);
+        bind_forces(binder, {s.force, s.force_filtered}, per_metre);
         binder.run();
     }
     sql::Statement step(db, path,
@@ -103,8 +103,7 @@ void insert_histories(sqlite3* db, const fs::path& path, const SoilRunRecord& r,
     for (const SoilStepLoad& s : r.step_load) {
         sql::Binder binder(step);
         binder.integer(++index).real(s.time).real(s.dt);
-        bind_force(binder, s.force, per_metre);
-        bind_force_per_metre(binder, s.force, per_metre);
+        bind_forces(binder, {s.force}, per_metre);
         binder.run();
     }
     sql::Statement motion(db, path,
