@@ -2,8 +2,9 @@
 
 #include "text_format.hpp"
 
+#include "risk/number_text.hpp"
+
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <type_traits>
 
@@ -23,9 +24,7 @@ std::string cell_text(const Cell& cell, const char* real_format, const char* mis
             } else if constexpr (std::is_same_v<T, double>) {
                 if (std::isnan(value)) return missing;
                 if (real_format != nullptr) return fmt(real_format, value);
-                char buffer[32];
-                return std::string(buffer,
-                                   std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+                return risk::number_text(value);
             } else if constexpr (std::is_same_v<T, std::string>) {
                 return value;
             } else {

@@ -2,8 +2,9 @@
 
 #include "db/queries.hpp"
 
-#include "number_text.hpp"
 #include "sqlite.hpp"
+
+#include "risk/number_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,9 @@
 #include <string>
 
 namespace rockfall::db {
+
+using risk::number_text;
+
 namespace {
 
 struct QuantityInfo {

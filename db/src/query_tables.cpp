@@ -1,9 +1,9 @@
 // Statistics on the values read by queries.cpp: percentiles, exceedance, the run summary.
 
-#include "number_text.hpp"
 #include "sqlite.hpp"
 
 #include "db/queries.hpp"
+#include "risk/number_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +11,9 @@
 #include <string>
 
 namespace rockfall::db {
+
+using risk::number_text;
+
 namespace {
 
 void require_confidence(double confidence) {

@@ -1,7 +1,6 @@
 #include "risk/distribution.hpp"
 
-#include "number_text.hpp"
-
+#include "risk/number_text.hpp"
 #include "risk/statistics.hpp"
 
 #include <algorithm>
@@ -17,7 +16,7 @@ using Family = Distribution::Family;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-std::string number(double value) { return detail::number_text(value); }
+std::string number(double value) { return number_text(value); }
 
 double normal_pdf(double z) {
     // phi(+-inf) = 0, and z phi(z) -> 0 there too, which the moment formulas rely on.

@@ -1,7 +1,6 @@
 #include "sample_shapes.hpp"
 
-#include "number_text.hpp"
-
+#include "risk/number_text.hpp"
 #include "shapes/generators.hpp"
 #include "shapes/random.hpp"
 
@@ -14,8 +13,6 @@
 
 namespace rockfall::risk {
 namespace {
-
-using detail::number_text;
 
 const std::string kind_key = "sweep.rock.kind";
 const std::string sphericity_key = "sweep.rock.sphericity";

@@ -1,8 +1,8 @@
 #include "risk/sampling.hpp"
 
-#include "number_text.hpp"
 #include "sample_shapes.hpp"
 
+#include "risk/number_text.hpp"
 #include "risk/random_release.hpp"
 #include "shapes/slope.hpp"
 
@@ -14,8 +14,6 @@
 
 namespace rockfall::risk {
 namespace {
-
-using detail::number_text;
 
 // Coordinates of a sample's point in the unit hypercube, in the order sampling.hpp documents.
 enum Coordinate : std::size_t {
