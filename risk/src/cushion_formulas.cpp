@@ -26,13 +26,19 @@ double energy_kj(double mass, double velocity) {
     return 0.5 * mass / kg_per_tonne * velocity * velocity;
 }
 
+// The inputs both formulas share: a sphere of mass and radius hitting a cushion of modulus M_E.
+void require_sphere_on_cushion(double mass, double velocity, double radius,
+                               double cushion_modulus) {
+    require_positive("mass", mass, "kg");
+    require_positive("velocity", velocity, "m/s");
+    require_positive("radius", radius, "m");
+    require_positive("cushion modulus M_E", cushion_modulus, "Pa");
+}
+
 }  // namespace
 
 double labiouse_impact_force(const LabiouseInputs& in) {
-    require_positive("mass", in.mass, "kg");
-    require_positive("velocity", in.velocity, "m/s");
-    require_positive("radius", in.radius, "m");
-    require_positive("cushion modulus M_E", in.cushion_modulus, "Pa");
+    require_sphere_on_cushion(in.mass, in.velocity, in.radius, in.cushion_modulus);
     const double modulus_kn_m2 = in.cushion_modulus / pa_per_kn_m2;
     const double force_kn = labiouse_factor * std::pow(modulus_kn_m2, 0.4) *
                             std::pow(in.radius, 0.2) *
@@ -41,10 +47,7 @@ double labiouse_impact_force(const LabiouseInputs& in) {
 }
 
 double astra_impact_force(const AstraInputs& in) {
-    require_positive("mass", in.mass, "kg");
-    require_positive("velocity", in.velocity, "m/s");
-    require_positive("radius", in.radius, "m");
-    require_positive("cushion modulus M_E", in.cushion_modulus, "Pa");
+    require_sphere_on_cushion(in.mass, in.velocity, in.radius, in.cushion_modulus);
     require_positive("cushion thickness", in.cushion_thickness, "m");
     detail::require_range("friction angle", in.friction_angle_deg, "deg", 0.0, 90.0, true, true);
     const double modulus_kn_m2 = in.cushion_modulus / pa_per_kn_m2;
