@@ -5,10 +5,10 @@
 #include "scenario_terrain.hpp"
 
 #include "app/scenario_file.hpp"
+#include "risk/number_text.hpp"
 #include "shapes/rocks.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
@@ -50,10 +50,8 @@ Location SourceMap::find(std::string_view path) const {
 }
 
 std::string format_number(double value) {
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-    std::string text(buffer, result.ptr);
-    // to_chars pads exponents to two digits ("1e-05"); people write "1e-5".
+    std::string text = risk::number_text(value);
+    // number_text (std::to_chars) pads exponents to two digits ("1e-05"); people write "1e-5".
     const std::size_t e = text.find('e');
     if (e != std::string::npos) {
         const std::size_t digits = e + 2;
