@@ -207,6 +207,16 @@ std::optional<ShapeChoice> choice_of(const toml::node& item, const std::string& 
     return std::nullopt;
 }
 
+// Drops every shape the spec draws (families, named shapes, generated rocks), such as those a
+// base file gave, before this file's own choice replaces them.
+void clear_shape_draw(risk::SweepSpec& spec) {
+    spec.kinds.clear();
+    spec.kind_weights.clear();
+    spec.entries.clear();
+    spec.entry_weights.clear();
+    spec.generated_weight = 0.0;
+}
+
 // kind = "name", or kind = { choice = ["sphere", "cube"], weights = [2, 1] }.
 void read_kind_key(TableReader& rock, NamedShapes& named, risk::SweepSpec& spec) {
     const toml::node* node = rock.get("kind");
@@ -248,11 +258,7 @@ void read_kind_key(TableReader& rock, NamedShapes& named, risk::SweepSpec& spec)
                            " or a named shape) or { choice = [names], weights = [numbers] }");
     }
     if (context.problems.size() != problems_before) return;
-    spec.kinds.clear();
-    spec.kind_weights.clear();
-    spec.entries.clear();
-    spec.entry_weights.clear();
-    spec.generated_weight = 0.0;
+    clear_shape_draw(spec);
     if (weights.size() != choices.size()) {
         // Kept with the kinds, so that risk::find_problems reports the mismatch in numbers.
         for (const ShapeChoice& choice : choices) spec.kinds.push_back(choice.kind);
@@ -356,10 +362,7 @@ void read_sweep_shapes(TableReader& rock, risk::SweepSpec& spec) {
         return;
     }
     if (own_kind) return;
-    spec.kinds.clear();
-    spec.kind_weights.clear();
-    spec.entries.clear();
-    spec.entry_weights.clear();
+    clear_shape_draw(spec);
     spec.generated_weight = 1.0;
     spec.sphericity = sphericity;
 }
