@@ -34,6 +34,18 @@ app::ScenarioError load_error(Loader load, const std::filesystem::path& file) {
     throw;
 }
 
+// The ScenarioError that `parse(text)` throws; fails the test when it throws none.
+template <typename Parser>
+app::ScenarioError parse_error(Parser parse, const std::string& text) {
+    try {
+        parse(text);
+    } catch (const app::ScenarioError& error) {
+        return error;
+    }
+    FAIL("parsing did not throw:\n" << text);
+    throw;
+}
+
 // The problem reported for `key`; fails the test when there is none.
 inline app::ScenarioProblem problem_for(const app::ScenarioError& error, const std::string& key) {
     for (const app::ScenarioProblem& problem : error.problems()) {

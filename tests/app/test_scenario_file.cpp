@@ -31,13 +31,9 @@ const fs::path samples = ROCKFALL_SAMPLES_DIR;
 const fs::path bad = fs::path(ROCKFALL_SCENARIO_DATA_DIR);
 
 ScenarioError parse_error(const std::string& text) {
-    try {
-        rockfall::app::parse_scenario(text, "inline.toml", samples);
-    } catch (const ScenarioError& error) {
-        return error;
-    }
-    FAIL("parsing did not throw:\n" << text);
-    throw;
+    return rockfall::test::parse_error(
+        [](const std::string& t) { rockfall::app::parse_scenario(t, "inline.toml", samples); },
+        text);
 }
 
 // Checks one reported line: key, value and rule text, file name and line.

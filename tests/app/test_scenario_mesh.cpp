@@ -38,13 +38,7 @@ Scenario parse(const std::string& text) {
 }
 
 ScenarioError parse_error(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const ScenarioError& error) {
-        return error;
-    }
-    FAIL("parsing did not throw:\n" << text);
-    throw;
+    return rockfall::test::parse_error(parse, text);
 }
 
 // The message of the problem reported for `key` in the rock table `rock`.

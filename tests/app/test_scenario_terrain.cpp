@@ -61,15 +61,14 @@ class Folder {
 
 // The problem reported for `key` when scenario text (written in tests/data/meshes) is parsed.
 rockfall::app::ScenarioProblem problem(const std::string& text, const std::string& key) {
-    try {
-        rockfall::app::parse_scenario(text, (meshes / "inline.toml").string(), meshes);
-    } catch (const ScenarioError& error) {
-        const rockfall::app::ScenarioProblem found = rockfall::test::problem_for(error, key);
-        CHECK(found.line > 0);
-        return found;
-    }
-    FAIL("parsing did not throw:\n" << text);
-    throw;
+    const ScenarioError error = rockfall::test::parse_error(
+        [](const std::string& t) {
+            rockfall::app::parse_scenario(t, (meshes / "inline.toml").string(), meshes);
+        },
+        text);
+    const rockfall::app::ScenarioProblem found = rockfall::test::problem_for(error, key);
+    CHECK(found.line > 0);
+    return found;
 }
 
 }  // namespace

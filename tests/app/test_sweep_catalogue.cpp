@@ -32,13 +32,7 @@ ScenarioFile parse(const std::string& text) {
 }
 
 ScenarioError parse_error(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const ScenarioError& error) {
-        return error;
-    }
-    FAIL("parsing did not throw:\n" << text);
-    throw;
+    return rockfall::test::parse_error(parse, text);
 }
 
 std::vector<std::string> entry_names(const rockfall::risk::SweepSpec& spec) {
