@@ -35,14 +35,12 @@ ScenarioError load_error(const fs::path& file) {
 
 // The error of scenario text that extends the seed slope.
 ScenarioError text_error(const std::string& text) {
-    try {
-        rockfall::app::parse_scenario_file("extends = \"seed_slope.toml\"\n" + text, "inline.toml",
-                                           samples);
-    } catch (const ScenarioError& error) {
-        return error;
-    }
-    FAIL("parsing did not throw:\n" << text);
-    throw;
+    return rockfall::test::parse_error(
+        [](const std::string& t) {
+            rockfall::app::parse_scenario_file("extends = \"seed_slope.toml\"\n" + t, "inline.toml",
+                                               samples);
+        },
+        text);
 }
 
 // The problem for `key` has this message and sits on the line containing `marker`.
