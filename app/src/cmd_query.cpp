@@ -1,6 +1,8 @@
 // `rockfall query DB <what>`: questions on a results database written by `rockfall sweep`.
 
 #include "commands.hpp"
+#include "curve_figure.hpp"
+#include "fit_figure.hpp"
 #include "query_report.hpp"
 #include "soil_report.hpp"
 
@@ -8,6 +10,7 @@
 #include "db/results_db.hpp"
 #include "db/soil_run.hpp"
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -23,7 +26,7 @@ struct QueryArgs {
     bool json = false;
     bool csv = false;
     double confidence = 0.95;
-    // percentiles, exceed: the breakdown.
+    // percentiles, exceed, curve: the breakdown.
     std::string group = "none";
     std::vector<double> size_classes;
     // percentiles.
@@ -33,6 +36,9 @@ struct QueryArgs {
     std::optional<double> distance;
     std::optional<double> value;
     std::string interval = "wilson";
+    // curve.
+    int points = 200;
+    std::string svg;
     // worst.
     std::int64_t count = 10;
     std::string worst_by = "reach";
@@ -98,6 +104,26 @@ void run_exceed(const QueryArgs& args) {
         std::cout, format_of(args), args.database,
         db::exceedance(database, quantity, threshold, grouping, method, args.confidence),
         grouping.by);
+}
+
+void run_curve(const QueryArgs& args) {
+    const db::Quantity quantity = db::parse_quantity(args.of);
+    const db::Grouping grouping = grouping_of(args);
+    const db::IntervalMethod method = db::parse_interval_method(args.interval);
+    const db::ResultsDb database = open_database(args);
+    const db::ExceedanceCurve curve =
+        db::exceedance_curve(database, quantity, args.points, grouping, method, args.confidence);
+    if (!args.svg.empty()) {
+        // The figure first: a failed write must not follow a printed table.
+        const std::string stem = std::filesystem::path(args.database).stem().string();
+        write_svg(args.svg,
+                  curve_figure(curve, "Exceedance of " + std::string(db::to_string(quantity)) +
+                                          ": " + stem));
+    }
+    write_curve(std::cout, format_of(args), args.database, curve, grouping.by);
+    if (!args.svg.empty() && format_of(args) == QueryFormat::text) {
+        std::cout << "figure written to " << args.svg << '\n';
+    }
 }
 
 void run_worst(const QueryArgs& args) {
@@ -184,6 +210,22 @@ void register_query(CLI::App& app) {
     add_grouping(exceed, *args);
     add_common(exceed, *args);
     exceed->callback([args] { run_exceed(*args); });
+
+    CLI::App* curve = query->add_subcommand(
+        "curve", "Exceedance curve: probability that a quantity is >= x over its range");
+    curve->add_option("--of", args->of, "Quantity")
+        ->check(CLI::IsMember(quantity_names()))
+        ->capture_default_str();
+    curve->add_option("--points", args->points, "Thresholds, evenly spaced over the stored range")
+        ->check(CLI::Range(2, 10000))
+        ->capture_default_str();
+    curve->add_option("--interval", args->interval, "Interval for the probability")
+        ->check(CLI::IsMember({"wilson", "clopper-pearson"}))
+        ->capture_default_str();
+    curve->add_option("--svg", args->svg, "Also draw the curves with their bands to this SVG file");
+    add_grouping(curve, *args);
+    add_common(curve, *args);
+    curve->callback([args] { run_curve(*args); });
 
     CLI::App* worst =
         query->add_subcommand("worst", "The worst samples with their index and seed, for replay");

@@ -1,4 +1,4 @@
-// Output of the percentiles, exceed and worst queries (the summary is in query_summary.cpp).
+// Output of the percentiles, exceed, curve and worst queries (the summary is in query_summary.cpp).
 
 #include "query_report.hpp"
 
@@ -123,10 +123,7 @@ void write_exceedance(std::ostream& out, QueryFormat format, const std::string& 
         rows.rows.push_back(std::move(cells));
     }
     const std::string method(db::to_string(table.method));
-    const std::string trials =
-        db::needs_wall_hit(table.quantity)
-            ? "every sample is a trial; a rock that misses the wall does not exceed"
-            : "trials are the samples with a value";
+    const std::string trials = exceedance_trials(table.quantity);
     std::vector<std::string> lines = {
         database + ": probability that " + name + " >= " + fmt("%g", table.threshold) + " " + unit +
             (table.quantity == db::Quantity::reach ? " (horizontal distance past the toe)" : ""),
@@ -141,6 +138,47 @@ void write_exceedance(std::ostream& out, QueryFormat format, const std::string& 
                                    {"interval", method},
                                    {"confidence", table.confidence},
                                    {"trials", trials}};
+    write(out, format, lines, std::move(meta), rows);
+}
+
+std::string exceedance_trials(db::Quantity quantity) {
+    return db::needs_wall_hit(quantity)
+               ? "every sample is a trial; a rock that misses the wall does not exceed"
+               : "trials are the samples with a value";
+}
+
+void write_curve(std::ostream& out, QueryFormat format, const std::string& database,
+                 const db::ExceedanceCurve& curve, db::GroupBy by) {
+    const std::string name(db::to_string(curve.quantity));
+    const std::string unit(db::unit_of(curve.quantity));
+    Table rows;
+    rows.columns = group_columns(by);
+    rows.columns.insert(rows.columns.end(),
+                        {name + "_at_least_" + unit_suffix(unit), "samples", "trials", "exceeding",
+                         "probability", "ci_lower", "ci_upper"});
+    for (const db::CurveGroup& group : curve.groups) {
+        for (const db::CurvePoint& p : group.points) {
+            std::vector<Cell> cells = group_cells(by, group.id);
+            cells.insert(cells.end(), {p.threshold, group.samples, group.trials, p.exceeding,
+                                       p.probability, p.interval.lower, p.interval.upper});
+            rows.rows.push_back(std::move(cells));
+        }
+    }
+    const std::string method(db::to_string(curve.method));
+    std::vector<std::string> lines = {
+        database + ": exceedance curve, probability that " + name + " >= x (" + unit + ")" +
+            (curve.quantity == db::Quantity::reach ? ", x past the toe" : ""),
+        percent_text(curve.confidence) + " % " + method + " interval; " +
+            exceedance_trials(curve.quantity)};
+    if (curve.groups.empty()) lines.emplace_back("no samples stored");
+    nlohmann::ordered_json meta = {{"database", database},
+                                   {"query", "curve"},
+                                   {"quantity", name},
+                                   {"unit", unit},
+                                   {"group_by", db::to_string(by)},
+                                   {"interval", method},
+                                   {"confidence", curve.confidence},
+                                   {"trials", exceedance_trials(curve.quantity)}};
     write(out, format, lines, std::move(meta), rows);
 }
 

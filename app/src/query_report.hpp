@@ -20,6 +20,13 @@ void write_percentiles(std::ostream& out, QueryFormat format, const std::string&
 void write_exceedance(std::ostream& out, QueryFormat format, const std::string& database,
                       const db::ExceedanceTable& table, db::GroupBy by);
 
+/// `curve`: one row per group and threshold.
+void write_curve(std::ostream& out, QueryFormat format, const std::string& database,
+                 const db::ExceedanceCurve& curve, db::GroupBy by);
+
+/// Which samples an exceedance probability is over, in words.
+std::string exceedance_trials(db::Quantity quantity);
+
 /// `worst`: one row per sample, worst first, ranked by `by`.
 void write_worst(std::ostream& out, QueryFormat format, const std::string& database,
                  db::Quantity by, const std::vector<db::WorstSample>& worst);

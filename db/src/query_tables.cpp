@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -40,6 +41,24 @@ std::int64_t count_of(const std::vector<double>& values) {
 }
 
 // Percentiles of one group's sorted values with their distribution-free intervals.
+// Trials for an exceedance: a rock that misses the wall puts no load on it, so for the wall
+// quantities every sample is a trial that does not exceed; otherwise the samples with a value.
+std::int64_t trials_of(const Group& group, Quantity quantity) {
+    return needs_wall_hit(quantity) ? group.samples : count_of(group.values);
+}
+
+// P(value >= threshold) over `trials` (group.values ascending).
+CurvePoint exceedance_point(const Group& group, std::int64_t trials, double threshold,
+                            IntervalMethod method, double confidence) {
+    CurvePoint point;
+    point.threshold = threshold;
+    const auto first = std::lower_bound(group.values.begin(), group.values.end(), threshold);
+    point.exceeding = group.values.end() - first;
+    point.probability = static_cast<double>(point.exceeding) / static_cast<double>(trials);
+    point.interval = proportion_interval(point.exceeding, trials, method, confidence);
+    return point;
+}
+
 PercentileGroup percentile_group(const Group& group, const std::vector<double>& ps,
                                  double confidence) {
     PercentileGroup out{group.id, group.samples, count_of(group.values), {}};
@@ -95,19 +114,44 @@ ExceedanceTable exceedance(const ResultsDb& db, Quantity quantity, double thresh
     }
     ExceedanceTable table{quantity, threshold, method, confidence, {}};
     for (const Group& group : read_groups(db, quantity, grouping)) {
-        ExceedanceGroup out;
-        out.id = group.id;
-        out.samples = group.samples;
-        // A rock that misses the wall puts no load on it: it is a trial that does not exceed.
-        out.trials = needs_wall_hit(quantity) ? group.samples : count_of(group.values);
-        if (out.trials == 0) continue;
-        const auto first = std::lower_bound(group.values.begin(), group.values.end(), threshold);
-        out.exceeding = group.values.end() - first;
-        out.probability = static_cast<double>(out.exceeding) / static_cast<double>(out.trials);
-        out.interval = proportion_interval(out.exceeding, out.trials, method, confidence);
-        table.groups.push_back(std::move(out));
+        const std::int64_t trials = trials_of(group, quantity);
+        if (trials == 0) continue;
+        const CurvePoint point = exceedance_point(group, trials, threshold, method, confidence);
+        table.groups.push_back(
+            {group.id, group.samples, trials, point.exceeding, point.probability, point.interval});
     }
     return table;
+}
+
+ExceedanceCurve exceedance_curve(const ResultsDb& db, Quantity quantity, int points,
+                                 const Grouping& grouping, IntervalMethod method,
+                                 double confidence) {
+    require_confidence(confidence);
+    if (points < 2 || points > 10000) {
+        throw std::invalid_argument("points = " + std::to_string(points) +
+                                    ": must be in [2, 10000]");
+    }
+    ExceedanceCurve curve{quantity, method, confidence, {}};
+    const std::vector<Group> groups = read_groups(db, quantity, grouping);
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -std::numeric_limits<double>::infinity();
+    for (const Group& group : groups) {
+        if (group.values.empty()) continue;
+        lo = std::min(lo, group.values.front());
+        hi = std::max(hi, group.values.back());
+    }
+    for (const Group& group : groups) {
+        const std::int64_t trials = trials_of(group, quantity);
+        if (trials == 0) continue;
+        CurveGroup out{group.id, group.samples, trials, {}};
+        // No stored value anywhere (every rock missed the wall): no thresholds to draw.
+        for (int k = 0; k < points && lo <= hi; ++k) {
+            const double x = k == points - 1 ? hi : lo + (hi - lo) * k / (points - 1);
+            out.points.push_back(exceedance_point(group, trials, x, method, confidence));
+        }
+        curve.groups.push_back(std::move(out));
+    }
+    return curve;
 }
 
 Summary summarize(const ResultsDb& db, double confidence) {

@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 
 using namespace rockfall::db;
@@ -99,6 +100,44 @@ TEST_CASE("exceedance by zone and of a wall quantity", "[db][query]") {
     CHECK(force.groups.at(0).exceeding == 150);
     CHECK_THROWS_AS(
         exceedance(known_database(), Quantity::reach, std::nan(""), {}, IntervalMethod::wilson),
+        std::invalid_argument);
+}
+
+TEST_CASE("exceedance curve: evenly spaced thresholds over the stored range", "[db][query]") {
+    // Reach i / 100 m for i = 0..999: thresholds 0, 3.33, 6.66, 9.99 m over 4 points; reach
+    // >= x for x = k * 9.99 / 3 is the samples i >= ceil(100 x).
+    const ExceedanceCurve curve =
+        exceedance_curve(known_database(), Quantity::reach, 4, {}, IntervalMethod::wilson);
+    REQUIRE(curve.groups.size() == 1);
+    const CurveGroup& all = curve.groups[0];
+    CHECK(all.trials == 1000);
+    REQUIRE(all.points.size() == 4);
+    const std::array<std::int64_t, 4> exceeding{1000, 667, 334, 1};
+    for (std::size_t k = 0; k < 4; ++k) {
+        CHECK_THAT(all.points[k].threshold, WithinRel(9.99 * static_cast<double>(k) / 3.0, 1e-12));
+        CHECK(all.points[k].exceeding == exceeding[k]);
+        CHECK_THAT(all.points[k].probability,
+                   WithinRel(static_cast<double>(exceeding[k]) / 1000.0, 1e-12));
+        // Each point is the single-threshold query at that threshold.
+        const ExceedanceTable single = exceedance(
+            known_database(), Quantity::reach, all.points[k].threshold, {}, IntervalMethod::wilson);
+        CHECK(single.groups[0].exceeding == all.points[k].exceeding);
+        CHECK(single.groups[0].interval.lower == all.points[k].interval.lower);
+        CHECK(single.groups[0].interval.upper == all.points[k].interval.upper);
+    }
+    // Wall quantities: every sample is a trial; by kind, the same thresholds for each group.
+    const ExceedanceCurve force =
+        exceedance_curve(known_database(), Quantity::peak_force, 3, {GroupBy::kind, {}},
+                         IntervalMethod::clopper_pearson);
+    REQUIRE(force.groups.size() == 3);
+    for (const CurveGroup& g : force.groups) {
+        CHECK(g.trials == g.samples);
+        REQUIRE(g.points.size() == 3);
+        CHECK(g.points[0].threshold == force.groups[0].points[0].threshold);
+        CHECK(g.points[2].threshold == force.groups[0].points[2].threshold);
+    }
+    CHECK_THROWS_AS(
+        exceedance_curve(known_database(), Quantity::reach, 1, {}, IntervalMethod::wilson),
         std::invalid_argument);
 }
 

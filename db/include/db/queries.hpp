@@ -173,6 +173,43 @@ ExceedanceTable exceedance(const ResultsDb& db, Quantity quantity, double thresh
                            const Grouping& grouping, IntervalMethod method,
                            double confidence = 0.95);
 
+/// One point of an exceedance curve: P(quantity >= threshold) with its interval.
+struct CurvePoint {
+    /// The threshold, in the quantity's unit.
+    double threshold = 0.0;
+    /// Trials whose value is >= the threshold, their share and its interval.
+    std::int64_t exceeding = 0;
+    double probability = 0.0;
+    risk::Interval interval;
+};
+
+/// One group's exceedance curve.
+struct CurveGroup {
+    /// The group, its samples and trials (as ExceedanceGroup).
+    GroupId id;
+    std::int64_t samples = 0;
+    std::int64_t trials = 0;
+    /// One point per threshold, ascending.
+    std::vector<CurvePoint> points;
+};
+
+/// Exceedance curves of a quantity per group, at the same thresholds for every group.
+struct ExceedanceCurve {
+    Quantity quantity = Quantity::reach;
+    IntervalMethod method = IntervalMethod::wilson;
+    double confidence = 0.95;
+    /// Groups with at least one trial.
+    std::vector<CurveGroup> groups;
+};
+
+/// P(quantity >= x) per group at `points` (in [2, 10000]) thresholds evenly spaced from the
+/// smallest to the largest stored value over all groups, each with its interval (the same
+/// trials and method as `exceedance`). Throws std::invalid_argument for a bad point count or
+/// confidence.
+ExceedanceCurve exceedance_curve(const ResultsDb& db, Quantity quantity, int points,
+                                 const Grouping& grouping, IntervalMethod method,
+                                 double confidence = 0.95);
+
 /// A sample among the worst by some quantity, with what identifies and replays it.
 struct WorstSample {
     /// Sample index (for `rockfall simulate --from DB --sample i`) and engine seed.
