@@ -142,6 +142,16 @@ std::vector<std::string> quantity_names() {
     return names;
 }
 
+// "reach (m), max_speed (m/s), ...": the quantities with their units, for help texts.
+std::string quantity_units() {
+    std::string text;
+    for (const db::Quantity q : db::all_quantities) {
+        text += (text.empty() ? "" : ", ") + std::string(db::to_string(q)) + " (" +
+                std::string(db::unit_of(q)) + ")";
+    }
+    return text;
+}
+
 // Options every query has: output format and confidence.
 void add_common(CLI::App* cmd, QueryArgs& args) {
     CLI::Option* json = cmd->add_flag("--json", args.json, "Print one JSON document");
@@ -186,7 +196,7 @@ void register_query(CLI::App& app) {
 
     CLI::App* pct = query->add_subcommand(
         "percentiles", "Percentiles with distribution-free confidence intervals");
-    pct->add_option("--of", args->of, "Quantity")
+    pct->add_option("--of", args->of, "Quantity: " + quantity_units())
         ->check(CLI::IsMember(quantity_names()))
         ->capture_default_str();
     pct->add_option("--p", args->levels, "Percentiles in (0, 100), e.g. 50,90,95,99")
@@ -199,7 +209,9 @@ void register_query(CLI::App& app) {
         "exceed", "Probability that a rock's reach (or another quantity) is >= a value");
     CLI::Option* distance =
         exceed->add_option("--distance", args->distance, "Horizontal distance past the toe (m)");
-    exceed->add_option("--of", args->of, "Quantity other than reach (with --value)")
+    exceed
+        ->add_option("--of", args->of,
+                     "Quantity other than reach (with --value): " + quantity_units())
         ->check(CLI::IsMember(quantity_names()))
         ->excludes(distance);
     exceed->add_option("--value", args->value, "Threshold of --of, in its unit")
@@ -213,7 +225,7 @@ void register_query(CLI::App& app) {
 
     CLI::App* curve = query->add_subcommand(
         "curve", "Exceedance curve: probability that a quantity is >= x over its range");
-    curve->add_option("--of", args->of, "Quantity")
+    curve->add_option("--of", args->of, "Quantity: " + quantity_units())
         ->check(CLI::IsMember(quantity_names()))
         ->capture_default_str();
     curve->add_option("--points", args->points, "Thresholds, evenly spaced over the stored range")
@@ -230,7 +242,7 @@ void register_query(CLI::App& app) {
     CLI::App* worst =
         query->add_subcommand("worst", "The worst samples with their index and seed, for replay");
     worst->add_option("--n", args->count, "How many samples")->capture_default_str();
-    worst->add_option("--by", args->worst_by, "Quantity to rank by")
+    worst->add_option("--by", args->worst_by, "Quantity to rank by: " + quantity_units())
         ->check(CLI::IsMember(quantity_names()))
         ->capture_default_str();
     add_common(worst, *args);
