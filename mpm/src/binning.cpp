@@ -54,6 +54,7 @@ void Solver<Dim>::bin_particles() {
     const double inverse_h = 1.0 / h;
     const int chunks = (n + kParticleGrain - 1) / kParticleGrain;
     w.task_count.assign(static_cast<std::size_t>(chunks), 0);
+    w.key_runs.resize(static_cast<std::size_t>(chunks));
     w.pool->parallel_for(n, kParticleGrain, [&](int begin, int end) {
         int clamped = 0;
         for (int p = begin; p < end; ++p) {
@@ -77,7 +78,19 @@ void Solver<Dim>::bin_particles() {
             }
             w.key[static_cast<std::size_t>(p)] = id;
         }
-        w.task_count[static_cast<std::size_t>(begin / kParticleGrain)] = clamped;
+        const auto chunk = static_cast<std::size_t>(begin / kParticleGrain);
+        w.task_count[chunk] = clamped;
+        // Runs of equal keys: particles are stored sorted by block (reorder_particles), so a
+        // chunk holds a few runs, and the counting sort below visits runs, not particles.
+        auto& runs = w.key_runs[chunk];
+        runs.clear();
+        for (int p = begin; p < end; ++p) {
+            const std::int32_t k = w.key[static_cast<std::size_t>(p)];
+            if (runs.empty() || runs.back().key != k) {
+                runs.push_back({k, p, 0, 0});
+            }
+            ++runs.back().count;
+        }
     });
     report_.clamped_particles = 0;
     for (const int c : w.task_count) {
@@ -87,9 +100,13 @@ void Solver<Dim>::bin_particles() {
     // Count per block, visiting only the blocks that hold particles (a few hundred of the tens
     // of thousands over the domain).
     w.occupied.clear();
-    for (const std::int32_t k : w.key) {
-        if (w.block_cursor[static_cast<std::size_t>(k)]++ == 0) {
-            w.occupied.push_back(k);
+    for (std::size_t c = 0; c < static_cast<std::size_t>(chunks); ++c) {
+        for (const detail::KeyRun& run : w.key_runs[c]) {
+            std::int32_t& count = w.block_cursor[static_cast<std::size_t>(run.key)];
+            if (count == 0) {
+                w.occupied.push_back(run.key);
+            }
+            count += run.count;
         }
     }
     std::sort(w.occupied.begin(), w.occupied.end());
@@ -150,10 +167,22 @@ void Solver<Dim>::bin_particles() {
         w.colours[static_cast<std::size_t>(colour)].push_back(static_cast<int>(w.blocks.size()));
         w.blocks.push_back(pb);
     }
-    for (int p = 0; p < n; ++p) {
-        const auto k = static_cast<std::size_t>(w.key[static_cast<std::size_t>(p)]);
-        w.order[static_cast<std::size_t>(w.block_cursor[k]++)] = p;
+    // Each run's place in the sorted order, runs in particle order (so the sort is stable and
+    // the same as placing the particles one by one), then the runs filled in parallel.
+    for (std::size_t c = 0; c < static_cast<std::size_t>(chunks); ++c) {
+        for (detail::KeyRun& run : w.key_runs[c]) {
+            std::int32_t& cursor = w.block_cursor[static_cast<std::size_t>(run.key)];
+            run.destination = cursor;
+            cursor += run.count;
+        }
     }
+    w.pool->run(chunks, [&](int c) {
+        for (const detail::KeyRun& run : w.key_runs[static_cast<std::size_t>(c)]) {
+            for (int j = 0; j < run.count; ++j) {
+                w.order[static_cast<std::size_t>(run.destination + j)] = run.first + j;
+            }
+        }
+    });
     for (const std::int32_t id : w.occupied) {
         w.block_cursor[static_cast<std::size_t>(id)] = 0;
     }

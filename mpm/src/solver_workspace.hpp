@@ -42,6 +42,15 @@ struct ParticleChunk {
     std::int32_t end;
 };
 
+// Consecutive particles [first, first + count) with the same particle block `key`, and where
+// the first of them goes in the sorted order.
+struct KeyRun {
+    std::int32_t key;
+    std::int32_t first;
+    std::int32_t count;
+    std::int32_t destination;
+};
+
 // A particle block's buffer overlapping a storage block: which particle block, and which of
 // its storage blocks (offset bits, as ParticleBlock::slots).
 struct Contribution {
@@ -98,6 +107,8 @@ struct Solver<Dim>::Workspace {
     std::vector<double> task_max;
     std::vector<double> task_density;
     std::vector<int> task_count;
+    // Per task of the block-key pass, its runs of equal keys.
+    std::vector<std::vector<detail::KeyRun>> key_runs;
     std::unique_ptr<detail::ThreadPool> pool;
 };
 
