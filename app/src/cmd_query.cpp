@@ -75,7 +75,14 @@ void run_summary(const QueryArgs& args) {
 
 void run_history(const QueryArgs& args) {
     const db::ResultsDb database = db::ResultsDb::open_any(args.database, false);
-    write_soil_history(std::cout, format_of(args), args.database, db::read_soil_run(database));
+    const db::SoilRunRecord record = db::read_soil_run(database);
+    if (!args.svg.empty()) {
+        write_svg(args.svg, soil_load_figure(record, record.run.scenario_name, nullptr));
+    }
+    write_soil_history(std::cout, format_of(args), args.database, record);
+    if (!args.svg.empty() && format_of(args) == QueryFormat::text) {
+        std::cout << "figure written to " << args.svg << '\n';
+    }
 }
 
 void run_percentiles(const QueryArgs& args) {
@@ -192,6 +199,7 @@ void register_query(CLI::App& app) {
     CLI::Option* history_json = history->add_flag("--json", args->json, "Print one JSON document");
     history->add_flag("--csv", args->csv, "Print CSV (units in the column names)")
         ->excludes(history_json);
+    history->add_option("--svg", args->svg, "Also draw the wall-load history to this SVG file");
     history->callback([args] { run_history(*args); });
 
     CLI::App* pct = query->add_subcommand(

@@ -84,25 +84,6 @@ void write_csv(const fs::path& path, const db::SoilRunRecord& record) {
     file.commit();
 }
 
-// The sampled wall load normal to the wall, as recorded (`filtered` false) or filtered.
-LoadHistory sampled_load(const db::SoilRunRecord& record, bool filtered) {
-    LoadHistory h;
-    h.source = "simulated";
-    h.per_metre = record.dimension == 2;
-    for (const db::SoilLoadSample& s : record.load) {
-        h.time.push_back(s.time);
-        h.load.push_back(filtered ? s.force_filtered[0] : s.force[0]);
-    }
-    return h;
-}
-
-// The run's filter of the sampled wall load, in words.
-std::string filter_text(const db::SoilRunRecord& record) {
-    return record.filter_window > 0.0 ? "filtered by a centred moving average over " +
-                                            fmt("%g", record.filter_window) + " s"
-                                      : "unfiltered";
-}
-
 void print_comparison(std::ostream& out, const HistoryComparison& c, const LoadHistory& measured,
                       const db::SoilRunRecord& record) {
     const char* unit = measured.per_metre ? " kN/m" : " kN";
@@ -184,15 +165,8 @@ void run_soil_command(const SoilArgs& args) {
     std::optional<HistoryComparison> comparison;
     if (measured) comparison = compare_histories(filtered, *measured);
     if (!args.svg.empty()) {
-        write_svg(args.svg,
-                  load_history_plot(
-                      "Wall load history: " + fs::path(args.scenario).stem().string(),
-                      sampled_load(record, false),
-                      "simulated, per " + fmt("%g", record.sample_interval) + " s", filtered,
-                      record.filter_window > 0.0
-                          ? "simulated, " + fmt("%g", record.filter_window) + " s moving average"
-                          : "simulated, unfiltered",
-                      measured ? &*measured : nullptr));
+        write_svg(args.svg, soil_load_figure(record, fs::path(args.scenario).stem().string(),
+                                             measured ? &*measured : nullptr));
     }
 
     if (args.json) {

@@ -67,6 +67,34 @@ std::optional<std::size_t> highest_bin(const db::SoilRunRecord& r) {
 
 }  // namespace
 
+LoadHistory sampled_load(const db::SoilRunRecord& record, bool filtered) {
+    LoadHistory h;
+    h.source = "simulated";
+    h.per_metre = record.dimension == 2;
+    for (const db::SoilLoadSample& s : record.load) {
+        h.time.push_back(s.time);
+        h.load.push_back(filtered ? s.force_filtered[0] : s.force[0]);
+    }
+    return h;
+}
+
+std::string filter_text(const db::SoilRunRecord& record) {
+    return record.filter_window > 0.0 ? "filtered by a centred moving average over " +
+                                            fmt("%g", record.filter_window) + " s"
+                                      : "unfiltered";
+}
+
+Plot soil_load_figure(const db::SoilRunRecord& record, const std::string& name,
+                      const LoadHistory* measured) {
+    return load_history_plot(
+        "Wall load history: " + name, sampled_load(record, false),
+        "simulated, per " + fmt("%g", record.sample_interval) + " s", sampled_load(record, true),
+        record.filter_window > 0.0
+            ? "simulated, " + fmt("%g", record.filter_window) + " s moving average"
+            : "simulated, unfiltered",
+        measured);
+}
+
 db::SoilRunRecord make_soil_record(const SoilFile& file, const mpm::SoilOutcome& o,
                                    const SoilRunTimes& times) {
     const mpm::SoilScenario& s = file.scenario;

@@ -6,7 +6,9 @@
 
 #include "query_table.hpp"
 
+#include "app/load_history.hpp"
 #include "app/soil_file.hpp"
+#include "app/svg_plot.hpp"
 #include "db/soil_run.hpp"
 #include "mpm/soil.hpp"
 
@@ -47,6 +49,19 @@ Table soil_summary_items(const db::SoilRunRecord& record);
 /// The sampled history: time, wall load normal to the wall (mean per interval, filtered),
 /// centre of mass x and z, front, kinetic energy; units in the column names.
 Table soil_history(const db::SoilRunRecord& record);
+
+/// The sampled wall load normal to the wall (N, or N/m in 2D), as recorded (`filtered`
+/// false) or filtered by the run's moving average.
+LoadHistory sampled_load(const db::SoilRunRecord& record, bool filtered);
+
+/// The run's filter of the sampled wall load in words ("filtered by a centred moving average
+/// over 0.05 s" or "unfiltered").
+std::string filter_text(const db::SoilRunRecord& record);
+
+/// The wall-load figure of a run named `name`: sampled and filtered load and, when given, a
+/// measured record (load_history_plot).
+Plot soil_load_figure(const db::SoilRunRecord& record, const std::string& name,
+                      const LoadHistory* measured);
 
 /// `rockfall query DB summary` on a soil database: the readable summary with the stored run's
 /// times and tool, the JSON document, or CSV items.
