@@ -186,38 +186,31 @@ void Solver<Dim>::bin_particles() {
     for (const std::int32_t id : w.occupied) {
         w.block_cursor[static_cast<std::size_t>(id)] = 0;
     }
-    // Block b's particles are [blocks[b].begin, blocks[b].end): the begins are the running
-    // particle count.
-    w.contribution_cursor.resize(w.blocks.size() + 1);
-    for (std::size_t b = 0; b < w.blocks.size(); ++b) {
-        w.contribution_cursor[b] = w.blocks[b].begin;
-    }
-    w.contribution_cursor[w.blocks.size()] = n;
-    w.pool->split_by_weight(w.contribution_cursor, w.block_split);
+    // Per thread a contiguous range of blocks with about equal particle counts (the blocks'
+    // begins are the running particle count), and the same ranges of their chunks and of the
+    // node blocks they list first: a node block goes to the thread of the first particle block
+    // that writes it, so most buffers a thread sums in update_grid are ones it filled, and most
+    // nodes it gathers from are ones it updated.
+    w.block_starts.resize(w.blocks.size() + 1);
     w.chunks.clear();
-    w.chunk_split.assign(w.block_split.size(), 0);
-    std::size_t owner = 1;
     for (std::size_t b = 0; b < w.blocks.size(); ++b) {
-        while (owner < w.block_split.size() &&
-               static_cast<std::size_t>(w.block_split[owner]) <= b) {
-            w.chunk_split[owner++] = static_cast<int>(w.chunks.size());
-        }
-        for (int k = w.blocks[b].begin; k < w.blocks[b].end; k += kChunkParticles) {
+        ParticleBlock<Dim>& pb = w.blocks[b];
+        w.block_starts[b] = pb.begin;
+        pb.first_chunk = static_cast<std::int32_t>(w.chunks.size());
+        for (int k = pb.begin; k < pb.end; k += kChunkParticles) {
             w.chunks.push_back(
-                {static_cast<std::int32_t>(b), k, std::min(k + kChunkParticles, w.blocks[b].end)});
+                {static_cast<std::int32_t>(b), k, std::min(k + kChunkParticles, pb.end)});
         }
     }
-    while (owner < w.block_split.size()) {
-        w.chunk_split[owner++] = static_cast<int>(w.chunks.size());
-    }
-    // A node block goes to the thread of the first particle block that writes it (blocks list
-    // their new node blocks in block order), so most of the buffers a thread sums in
-    // update_grid are the ones it filled, and most nodes it gathers from are ones it updated.
+    w.block_starts.back() = n;
+    w.pool->split_by_weight(w.block_starts, w.block_split);
+    w.chunk_split.resize(w.block_split.size());
     w.slot_split.resize(w.block_split.size());
     for (std::size_t k = 0; k < w.block_split.size(); ++k) {
         const auto b = static_cast<std::size_t>(w.block_split[k]);
-        w.slot_split[k] = b < w.blocks.size() ? w.blocks[b].first_active
-                                              : static_cast<int>(w.active_slots.size());
+        const bool end = b == w.blocks.size();
+        w.chunk_split[k] = end ? static_cast<int>(w.chunks.size()) : w.blocks[b].first_chunk;
+        w.slot_split[k] = end ? static_cast<int>(w.active_slots.size()) : w.blocks[b].first_active;
     }
 
     // Writers of each active node block, colour by colour: a node receives at most one buffer

@@ -29,8 +29,10 @@ struct ParticleBlock {
     IVec<Dim> first_node;
     int begin;
     int end;
-    // Size of the active-slot list before this block's node blocks were added.
-    std::int32_t first_active;
+    // Size of the active-slot list before this block's node blocks were added, and index of
+    // its first chunk.
+    std::int32_t first_active = 0;
+    std::int32_t first_chunk = 0;
     std::array<std::int32_t, detail::kColours<Dim>> slots;
 };
 
@@ -83,6 +85,8 @@ struct Solver<Dim>::Workspace {
     // (the node blocks its particle blocks write first), computed once per step: a thread handles
     // the same particles and nodes in every phase (which thread runs a task never changes a
     // result).
+    // Running particle count at each block's start, then the total (blocks.size() + 1).
+    std::vector<std::int32_t> block_starts;
     std::vector<int> block_split;
     std::vector<int> slot_split;
     std::vector<detail::ParticleChunk> chunks;
