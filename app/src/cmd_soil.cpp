@@ -110,9 +110,6 @@ void print_comparison(std::ostream& out, const HistoryComparison& c, const LoadH
 
 nlohmann::json comparison_json(const HistoryComparison& c, const LoadHistory& measured) {
     const std::string u = measured.per_metre ? "_per_m" : "";
-    auto number = [](double v) {
-        return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v);
-    };
     return {{"measured_file", measured.source},
             {"points", c.points},
             {"from_s", c.from},
@@ -121,22 +118,28 @@ nlohmann::json comparison_json(const HistoryComparison& c, const LoadHistory& me
             {"simulated_peak_time_s", c.simulated_peak_time},
             {"measured_peak_N" + u, c.measured_peak},
             {"measured_peak_time_s", c.measured_peak_time},
-            {"peak_ratio", number(c.peak_ratio)},
+            {"peak_ratio", json_number(c.peak_ratio)},
             {"simulated_impulse_N_s" + u, c.simulated_impulse},
             {"measured_impulse_N_s" + u, c.measured_impulse},
-            {"impulse_ratio", number(c.impulse_ratio)},
-            {"loading_ratio", number(c.loading_ratio)},
-            {"after_peak_ratio", number(c.after_peak_ratio)},
+            {"impulse_ratio", json_number(c.impulse_ratio)},
+            {"loading_ratio", json_number(c.loading_ratio)},
+            {"after_peak_ratio", json_number(c.after_peak_ratio)},
             {"rms_difference_N" + u, c.rms_difference}};
 }
 
 void run_soil_command(const SoilArgs& args) {
     const SoilFile file = load_soil_scenario(args.scenario);
-    // Read the measured record and refuse a mismatch now rather than after the run.
+    // Read the measured record and refuse a mismatch (units, or no shared times) now rather
+    // than after the run.
     std::optional<LoadHistory> measured;
     if (!args.measured.empty()) {
         measured = read_measured_history(args.measured);
-        check_comparable(file.scenario.numerics.dimension == 2, *measured);
+        const mpm::SoilOutput& output = file.scenario.output;
+        // The sampled history runs from one interval to the last whole interval.
+        const double last =
+            std::floor(output.duration / output.sample_interval + 1e-9) * output.sample_interval;
+        check_comparable(file.scenario.numerics.dimension == 2, output.sample_interval, last,
+                         *measured);
     }
     // Refuse an existing or unwritable database now rather than after the run.
     if (!args.db.empty()) db::check_new_database(args.db);

@@ -117,20 +117,33 @@ LoadHistory read_measured_history(const std::filesystem::path& path) {
     return measured_history(CsvTable::read(path));
 }
 
-void check_comparable(bool simulated_per_metre, const LoadHistory& measured) {
-    if (simulated_per_metre == measured.per_metre) return;
-    throw std::invalid_argument(
-        measured.source + ": " +
-        (simulated_per_metre
-             ? "a 2D (plane-strain) run gives loads per metre of width: the measured file "
-               "needs a load_kN_per_m or load_N_per_m column"
-             : "a 3D run gives the total load on the wall: the measured file needs a load_kN "
-               "or load_N column"));
+int check_comparable(bool simulated_per_metre, double from, double to,
+                     const LoadHistory& measured) {
+    if (simulated_per_metre != measured.per_metre) {
+        throw std::invalid_argument(
+            measured.source + ": " +
+            (simulated_per_metre
+                 ? "a 2D (plane-strain) run gives loads per metre of width: the measured file "
+                   "needs a load_kN_per_m or load_N_per_m column"
+                 : "a 3D run gives the total load on the wall: the measured file needs a "
+                   "load_kN or load_N column"));
+    }
+    const auto shared = std::count_if(measured.time.begin(), measured.time.end(),
+                                      [&](double t) { return t >= from && t <= to; });
+    if (shared < 2) {
+        std::ostringstream message;
+        message << measured.source << ": the measured history (t = " << measured.time.front()
+                << " to " << measured.time.back() << " s) shares fewer than two times with the "
+                << "simulated one (t = " << from << " to " << to << " s)";
+        throw std::invalid_argument(message.str());
+    }
+    return static_cast<int>(shared);
 }
 
 HistoryComparison compare_histories(const LoadHistory& simulated, const LoadHistory& measured) {
-    check_comparable(simulated.per_metre, measured);
     HistoryComparison c;
+    c.points = check_comparable(simulated.per_metre, simulated.time.front(), simulated.time.back(),
+                                measured);
     c.from = std::max(simulated.time.front(), measured.time.front());
     c.to = std::min(simulated.time.back(), measured.time.back());
     // Both histories, linear between their points, on the union of their times in the overlap:
@@ -143,17 +156,6 @@ HistoryComparison compare_histories(const LoadHistory& simulated, const LoadHist
     }
     std::sort(t.begin(), t.end());
     t.erase(std::unique(t.begin(), t.end()), t.end());
-    c.points = static_cast<int>(
-        std::count_if(measured.time.begin(), measured.time.end(),
-                      [&](double time) { return time >= c.from && time <= c.to; }));
-    if (c.points < 2) {
-        std::ostringstream message;
-        message << measured.source << ": the measured history (t = " << measured.time.front()
-                << " to " << measured.time.back() << " s) shares fewer than two times with the "
-                << "simulated one (t = " << simulated.time.front() << " to "
-                << simulated.time.back() << " s)";
-        throw std::invalid_argument(message.str());
-    }
     std::vector<double> sim;
     std::vector<double> meas;
     for (const double time : t) {

@@ -48,11 +48,6 @@ db::SceneVector scene(const mpm::Vec3& v, int dimension) {
     return {v.x(), dimension == 2 ? nan : v.y(), v.z()};
 }
 
-// A JSON number, or null for NaN (a quantity a run does not have).
-nlohmann::json number(double value) {
-    return std::isnan(value) ? nlohmann::json(nullptr) : nlohmann::json(value);
-}
-
 bool has_wall(const db::SoilRunRecord& r) { return !std::isnan(r.wall_distance_from_toe); }
 
 // The highest bin of the deposit's height profile, if any soil rests on the slope.
@@ -216,7 +211,8 @@ nlohmann::json soil_json(const db::SoilRunRecord& r) {
     nlohmann::json rows = nlohmann::json::array();
     for (const auto& row : history.rows) {
         nlohmann::json values = nlohmann::json::array();
-        for (const Cell& cell : row) values.push_back(number(std::get<double>(cell)));
+        for (const Cell& cell : row)
+            values.push_back(nlohmann::json(json_number(std::get<double>(cell))));
         rows.push_back(std::move(values));
     }
     nlohmann::json result = {
@@ -231,7 +227,7 @@ nlohmann::json soil_json(const db::SoilRunRecord& r) {
         {"simulated_time_s", r.simulated_time},
         {"runtime_s", r.runtime},
         {"wall_enabled", has_wall(r)},
-        {"wall_distance_from_toe_m", number(r.wall_distance_from_toe)},
+        {"wall_distance_from_toe_m", json_number(r.wall_distance_from_toe)},
         {"sample_interval_s", r.sample_interval},
         {"filter_window_s", r.filter_window},
         {u.key("peak_wall_force_N"), r.peak_force},
@@ -244,9 +240,9 @@ nlohmann::json soil_json(const db::SoilRunRecord& r) {
     if (!r.motion.empty()) {
         const db::SoilMotionSample& last = r.motion.back();
         result["final_front_x_m"] = last.front_x;
-        result["final_centre_of_mass_m"] = {number(last.centre_of_mass[0]),
-                                            number(last.centre_of_mass[1]),
-                                            number(last.centre_of_mass[2])};
+        result["final_centre_of_mass_m"] = {json_number(last.centre_of_mass[0]),
+                                            json_number(last.centre_of_mass[1]),
+                                            json_number(last.centre_of_mass[2])};
     }
     return result;
 }

@@ -113,9 +113,13 @@ TEST_CASE("Comparison refuses mismatched units and disjoint times", "[app][load_
                                "needs a load_kN or load_N column"));
     LoadHistory sim_2d = sim;
     sim_2d.per_metre = true;
-    CHECK_THROWS_WITH(check_comparable(true, history_of("time_s,load_N\n0,1\n1,2\n")),
+    CHECK_THROWS_WITH(check_comparable(true, 0.0, 4.0, history_of("time_s,load_N\n0,1\n1,2\n")),
                       Contains("needs a load_kN_per_m or load_N_per_m column"));
     CHECK_NOTHROW(compare_histories(sim_2d, per_m));
+    CHECK(check_comparable(true, 0.0, 4.0, per_m) == 2);
+    CHECK_THROWS_WITH(check_comparable(true, 0.01, 0.5, per_m),
+                      Contains("measured.csv: the measured history (t = 0 to 1 s) shares fewer "
+                               "than two times with the simulated one (t = 0.01 to 0.5 s)"));
     CHECK_THROWS_WITH(compare_histories(sim, history_of("time_s,load_N\n5,1\n6,2\n")),
                       Contains("shares fewer than two times with the simulated one"));
 }

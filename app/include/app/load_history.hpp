@@ -70,8 +70,10 @@ struct HistoryComparison {
 };
 
 /// Throws std::invalid_argument unless `measured` is per metre exactly when the simulated
-/// loads are (a 2D run); the message says which column a 2D or 3D run needs.
-void check_comparable(bool simulated_per_metre, const LoadHistory& measured);
+/// loads are (a 2D run; the message says which column a 2D or 3D run needs) and at least two
+/// measured times lie in the simulated history's span [from, to] (s). Returns how many do.
+/// A run checks this before it starts, with the span its sampled history will have.
+int check_comparable(bool simulated_per_metre, double from, double to, const LoadHistory& measured);
 
 /// Compares `simulated` with `measured`. Throws std::invalid_argument when check_comparable
 /// fails or when they share fewer than two measured times.
