@@ -6,6 +6,8 @@
 // grows as E*^(2/5) like the formula's lambda^(2/5), so lambda scales with E*:
 // 15.6 GPa * 500 / 2815 = 2.77 GPa, which a 30 GPa rock reaches against a 2.95 GPa facing.
 
+#include "wall_scenario.hpp"
+
 #include "engine/simulation.hpp"
 #include "risk/impact_fit.hpp"
 
@@ -21,37 +23,16 @@ namespace {
 
 constexpr double kDensity = 2600.0;  // kg/m3, the seed rocks' default
 
-// A sphere of `size` sliding without friction along a flat run-out into the wall at `speed`.
-engine::Scenario impact(double size, double speed, double wall_modulus) {
-    engine::Scenario scenario;
-    scenario.slope.segments = {{4.0, 0.0}};
-    scenario.slope.bars.enabled = false;
-    scenario.slope.bars.segments.clear();
-    scenario.slope.side_walls.enabled = false;
-    scenario.slope.wall.distance_from_toe = 3.0;
-    scenario.materials.slope = engine::Material{0.0, 0.3, 0.0};
-    scenario.materials.wall = engine::Material{0.0, 0.3, 0.0};
-    scenario.wall_contact.wall_youngs_modulus = wall_modulus;
-    engine::RockRelease rock;
-    rock.rock.kind = shapes::RockKind::sphere;
-    rock.rock.size = size;
-    rock.rock.density = kDensity;
-    rock.rock.material = engine::Material{0.0, 0.3, 0.0};
-    rock.release.distance = 3.0 - 0.5 * size - 0.3;
-    rock.release.velocity = engine::Vec3(speed, 0.0, 0.0);
-    scenario.rocks = {rock};
-    scenario.stations = {1.0};
-    scenario.numerics.max_time = 0.5;
-    return scenario;
-}
-
 // lambda identified on the mean line of sphere impacts of the seed's sizes (0.2 to 0.4 m)
 // at 1.5 to 6.5 m/s, the range of the seed sweep's wall impacts.
 double identified_lambda(double wall_modulus) {
+    engine::WallContact contact;
+    contact.wall_youngs_modulus = wall_modulus;
     std::vector<risk::ImpactRow> rows;
     for (const double size : {0.2, 0.3, 0.4}) {
         for (const double speed : {1.5, 3.0, 4.5, 6.5}) {
-            const engine::Outcome outcome = engine::simulate(impact(size, speed, wall_modulus), 1);
+            const engine::Outcome outcome = engine::simulate(
+                engine::test::wall_scenario(contact, 0.3, size, speed, kDensity), 1);
             const engine::RockOutcome& rock = outcome.rocks.front();
             REQUIRE(rock.wall_hits.size() == 1);
             const engine::WallHit& hit = rock.wall_hits.front();

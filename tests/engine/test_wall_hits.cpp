@@ -2,6 +2,8 @@
 // run-out into the reaction wall at 8 m/s, so the hit is a pure normal impact whose impulse,
 // peak force and duration have closed forms (wall_contact.hpp).
 
+#include "wall_scenario.hpp"
+
 #include "engine/simulation.hpp"
 #include "engine/wall_contact.hpp"
 
@@ -23,31 +25,9 @@ constexpr double kDensity = 2600.0;
 constexpr double kSpeed = 8.0;
 const double kMass = kDensity * 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius;
 
-// Flat 4 m run-out, wall face 3 m from its start, the sphere's front 0.8 m (0.1 s) upslope of
-// it. No friction anywhere, so the sphere slides without spin and the wall's friction is idle;
-// the given restitution is both the wall's and the rock's.
+// The 0.2 m sphere at 8 m/s (0.1 s from the wall).
 Scenario wall_scenario(const WallContact& contact, double restitution) {
-    Scenario scenario;
-    scenario.name = "wall hit";
-    scenario.slope.segments = {{4.0, 0.0}};
-    scenario.slope.bars.enabled = false;
-    scenario.slope.bars.segments.clear();
-    scenario.slope.side_walls.enabled = false;
-    scenario.slope.wall.distance_from_toe = 3.0;
-    scenario.materials.slope = Material{0.0, 0.3, 0.0};
-    scenario.materials.wall = Material{0.0, restitution, 0.0};
-    scenario.wall_contact = contact;
-    RockRelease rock;
-    rock.rock.kind = rockfall::shapes::RockKind::sphere;
-    rock.rock.size = 2.0 * kRadius;
-    rock.rock.density = kDensity;
-    rock.rock.material = Material{0.0, restitution, 0.0};
-    rock.release.distance = 3.0 - kRadius - 0.8;
-    rock.release.velocity = Vec3(kSpeed, 0.0, 0.0);
-    scenario.rocks = {rock};
-    scenario.stations = {1.0};
-    scenario.numerics.max_time = 0.3;
-    return scenario;
+    return test::wall_scenario(contact, restitution, 2.0 * kRadius, kSpeed, kDensity);
 }
 
 WallContact linear_contact(double stiffness) {
