@@ -11,6 +11,7 @@
 // Usage: bench_mpm [cell_size_m] [duration_s] [max_threads] [rounds]
 #include "app/soil_file.hpp"
 #include "mpm/soil.hpp"
+#include "risk/statistics.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -71,12 +72,6 @@ Timing run(const SoilScenario& scenario) {
 
 }  // namespace
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 int main(int argc, char** argv) {
     const std::string file = ROCKFALL_SAMPLES_DIR "/soil/seed_3d.toml";
     SoilScenario scenario = rockfall::app::load_soil_scenario(file).scenario;
@@ -132,7 +127,7 @@ int main(int argc, char** argv) {
         std::printf(
             "  threads %d: wall-clock %.2f s for the whole scenario, speed-up %.2f "
             "(range %.2f to %.2f)\n",
-            threads, median(walls[k]), median(ratios[k]),
+            threads, rockfall::risk::median(walls[k]), rockfall::risk::median(ratios[k]),
             *std::min_element(ratios[k].begin(), ratios[k].end()),
             *std::max_element(ratios[k].begin(), ratios[k].end()));
     }
