@@ -107,79 +107,86 @@ void write_percentiles(std::ostream& out, QueryFormat format, const std::string&
     write(out, format, lines, std::move(meta), rows);
 }
 
-void write_exceedance(std::ostream& out, QueryFormat format, const std::string& database,
-                      const db::ExceedanceTable& table, db::GroupBy by) {
-    const std::string name(db::to_string(table.quantity));
-    const std::string unit(db::unit_of(table.quantity));
-    const std::string threshold_column = name + "_at_least_" + unit_suffix(unit);
-    Table rows;
-    rows.columns = group_columns(by);
-    rows.columns.insert(rows.columns.end(), {threshold_column, "samples", "trials", "exceeding",
-                                             "probability", "ci_lower", "ci_upper"});
-    for (const db::ExceedanceGroup& group : table.groups) {
-        std::vector<Cell> cells = group_cells(by, group.id);
-        cells.insert(cells.end(), {table.threshold, group.samples, group.trials, group.exceeding,
-                                   group.probability, group.interval.lower, group.interval.upper});
-        rows.rows.push_back(std::move(cells));
-    }
-    const std::string method(db::to_string(table.method));
-    const std::string trials = exceedance_trials(table.quantity);
-    std::vector<std::string> lines = {
-        database + ": probability that " + name + " >= " + fmt("%g", table.threshold) + " " + unit +
-            (table.quantity == db::Quantity::reach ? " (horizontal distance past the toe)" : ""),
-        percent_text(table.confidence) + " % " + method + " interval; " + trials};
-    if (table.groups.empty()) lines.emplace_back("no samples stored");
-    nlohmann::ordered_json meta = {{"database", database},
-                                   {"query", "exceed"},
-                                   {"quantity", name},
-                                   {"unit", unit},
-                                   {"threshold", table.threshold},
-                                   {"group_by", db::to_string(by)},
-                                   {"interval", method},
-                                   {"confidence", table.confidence},
-                                   {"trials", trials}};
-    write(out, format, lines, std::move(meta), rows);
-}
-
 std::string exceedance_trials(db::Quantity quantity) {
     return db::needs_wall_hit(quantity)
                ? "every sample is a trial; a rock that misses the wall does not exceed"
                : "trials are the samples with a value";
 }
 
+namespace {
+
+// What `exceed` and `curve` share: one row per group and threshold, the interval line and
+// the JSON metadata.
+struct ExceedanceReport {
+    db::Quantity quantity;
+    db::GroupBy by;
+    Table rows;
+    std::string name;
+    std::string unit;
+
+    ExceedanceReport(db::Quantity q, db::GroupBy group_by)
+        : quantity(q), by(group_by), name(db::to_string(q)), unit(db::unit_of(q)) {
+        rows.columns = group_columns(by);
+        rows.columns.insert(rows.columns.end(),
+                            {name + "_at_least_" + unit_suffix(unit), "samples", "trials",
+                             "exceeding", "probability", "ci_lower", "ci_upper"});
+    }
+
+    void add(const db::GroupId& id, std::int64_t samples, std::int64_t trials,
+             const db::CurvePoint& p) {
+        std::vector<Cell> cells = group_cells(by, id);
+        cells.insert(cells.end(), {p.threshold, samples, trials, p.exceeding, p.probability,
+                                   p.interval.lower, p.interval.upper});
+        rows.rows.push_back(std::move(cells));
+    }
+
+    void write(std::ostream& out, QueryFormat format, const std::string& database,
+               const char* query, std::string headline, bool no_groups, db::IntervalMethod method,
+               double confidence, nlohmann::ordered_json extra) const {
+        const std::string interval(db::to_string(method));
+        std::vector<std::string> lines = {std::move(headline), percent_text(confidence) + " % " +
+                                                                   interval + " interval; " +
+                                                                   exceedance_trials(quantity)};
+        if (no_groups) lines.emplace_back("no samples stored");
+        nlohmann::ordered_json meta = {
+            {"database", database}, {"query", query}, {"quantity", name}, {"unit", unit}};
+        meta.update(extra);
+        meta.update(nlohmann::ordered_json{{"group_by", db::to_string(by)},
+                                           {"interval", interval},
+                                           {"confidence", confidence},
+                                           {"trials", exceedance_trials(quantity)}});
+        app::write(out, format, lines, std::move(meta), rows);
+    }
+};
+
+}  // namespace
+
+void write_exceedance(std::ostream& out, QueryFormat format, const std::string& database,
+                      const db::ExceedanceTable& table, db::GroupBy by) {
+    ExceedanceReport report(table.quantity, by);
+    for (const db::ExceedanceGroup& g : table.groups) {
+        report.add(g.id, g.samples, g.trials,
+                   {table.threshold, g.exceeding, g.probability, g.interval});
+    }
+    report.write(
+        out, format, database, "exceed",
+        database + ": probability that " + report.name + " >= " + fmt("%g", table.threshold) + " " +
+            report.unit +
+            (table.quantity == db::Quantity::reach ? " (horizontal distance past the toe)" : ""),
+        table.groups.empty(), table.method, table.confidence, {{"threshold", table.threshold}});
+}
+
 void write_curve(std::ostream& out, QueryFormat format, const std::string& database,
                  const db::ExceedanceCurve& curve, db::GroupBy by) {
-    const std::string name(db::to_string(curve.quantity));
-    const std::string unit(db::unit_of(curve.quantity));
-    Table rows;
-    rows.columns = group_columns(by);
-    rows.columns.insert(rows.columns.end(),
-                        {name + "_at_least_" + unit_suffix(unit), "samples", "trials", "exceeding",
-                         "probability", "ci_lower", "ci_upper"});
-    for (const db::CurveGroup& group : curve.groups) {
-        for (const db::CurvePoint& p : group.points) {
-            std::vector<Cell> cells = group_cells(by, group.id);
-            cells.insert(cells.end(), {p.threshold, group.samples, group.trials, p.exceeding,
-                                       p.probability, p.interval.lower, p.interval.upper});
-            rows.rows.push_back(std::move(cells));
-        }
+    ExceedanceReport report(curve.quantity, by);
+    for (const db::CurveGroup& g : curve.groups) {
+        for (const db::CurvePoint& p : g.points) report.add(g.id, g.samples, g.trials, p);
     }
-    const std::string method(db::to_string(curve.method));
-    std::vector<std::string> lines = {
-        database + ": exceedance curve, probability that " + name + " >= x (" + unit + ")" +
-            (curve.quantity == db::Quantity::reach ? ", x past the toe" : ""),
-        percent_text(curve.confidence) + " % " + method + " interval; " +
-            exceedance_trials(curve.quantity)};
-    if (curve.groups.empty()) lines.emplace_back("no samples stored");
-    nlohmann::ordered_json meta = {{"database", database},
-                                   {"query", "curve"},
-                                   {"quantity", name},
-                                   {"unit", unit},
-                                   {"group_by", db::to_string(by)},
-                                   {"interval", method},
-                                   {"confidence", curve.confidence},
-                                   {"trials", exceedance_trials(curve.quantity)}};
-    write(out, format, lines, std::move(meta), rows);
+    report.write(
+        out, format, database, "curve",
+        database + ": exceedance curve, probability that " + report.name + " >= x (" + report.unit +
+            ")" + (curve.quantity == db::Quantity::reach ? ", x past the toe" : ""),
+        curve.groups.empty(), curve.method, curve.confidence, nlohmann::ordered_json::object());
 }
 
 void write_worst(std::ostream& out, QueryFormat format, const std::string& database,
