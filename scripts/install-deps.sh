@@ -8,6 +8,9 @@ packages=(
     build-essential cmake ninja-build pkg-config git ccache
     # physics, geometry, maths
     libbullet-dev libeigen3-dev libqhull-dev libassimp-dev
+    # assimp's CMake targets (assimpTargets.cmake) link /usr/lib/x86_64-linux-gnu/libz.so, but
+    # libassimp-dev does not depend on zlib1g-dev: without it the link step has no rule for it
+    zlib1g-dev
     # storage and command line
     libsqlite3-dev sqlite3 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
     # tests and format check
