@@ -4,8 +4,8 @@
 // near-wall step everywhere. Prints the machine, the rates and the ratios a/b and a/c.
 
 #include "bare_bullet.hpp"
+#include "scenario/scenario_file.hpp"
 
-#include "app/scenario_file.hpp"
 #include "engine/simulation.hpp"
 #include "risk/random_release.hpp"
 
@@ -298,7 +298,7 @@ void print_report(const engine::Scenario& base, const Options& options, const Re
 
 int run(const Options& options) {
     print_machine();
-    const engine::Scenario base = app::load_scenario(options.scenario).scenario;
+    const engine::Scenario base = scenario::load_scenario(options.scenario).scenario;
     Results results;
     results.load_start = load_average();
     measure_coarse(base, options, results);

@@ -9,7 +9,8 @@
 // included; the arguments override its cell size and duration.
 //
 // Usage: bench_mpm [cell_size_m] [duration_s] [max_threads] [rounds]
-#include "app/soil_file.hpp"
+#include "scenario/soil_file.hpp"
+
 #include "mpm/soil.hpp"
 #include "risk/statistics.hpp"
 
@@ -74,7 +75,7 @@ Timing run(const SoilScenario& scenario) {
 
 int main(int argc, char** argv) {
     const std::string file = ROCKFALL_SAMPLES_DIR "/soil/seed_3d.toml";
-    SoilScenario scenario = rockfall::app::load_soil_scenario(file).scenario;
+    SoilScenario scenario = rockfall::scenario::load_soil_scenario(file).scenario;
     if (argc > 1) {
         scenario.numerics.cell_size = std::atof(argv[1]);
     }

@@ -7,7 +7,8 @@
 // drawn beforehand. CPU times come from getrusage, so that time lost to other work on a
 // shared machine does not count as overhead.
 
-#include "app/scenario_file.hpp"
+#include "scenario/scenario_file.hpp"
+
 #include "engine/simulation.hpp"
 #include "risk/sampling.hpp"
 
@@ -95,7 +96,7 @@ int main(int argc, char** argv) {
     std::printf("machine: %s, %u hardware threads; build %s\n", cpu_model().c_str(),
                 std::thread::hardware_concurrency(), ROCKFALL_BUILD_TYPE);
     std::printf("scenario: %s, %d samples\n\n", scenario.c_str(), samples);
-    const app::ScenarioFile file = app::load_scenario(scenario);
+    const scenario::ScenarioFile file = scenario::load_scenario(scenario);
 
     // Sampling alone: draw_sample and sample_scenario for every sample.
     double cpu = cpu_seconds(RUSAGE_SELF);

@@ -24,4 +24,10 @@ void AtomicFile::commit() {
     committed_ = true;
 }
 
+void write_svg(const std::filesystem::path& path, const report::Plot& plot) {
+    AtomicFile file(path);
+    file.stream() << report::render_svg(plot);
+    file.commit();
+}
+
 }  // namespace rockfall::app

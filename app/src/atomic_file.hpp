@@ -1,6 +1,8 @@
 #pragma once
 /// Output files that appear under their name only when complete.
 
+#include "report/svg_plot.hpp"
+
 #include <filesystem>
 #include <fstream>
 
@@ -28,5 +30,8 @@ class AtomicFile {
     std::ofstream out_;
     bool committed_ = false;
 };
+
+/// Writes report::render_svg(plot) to a file, which appears only when complete.
+void write_svg(const std::filesystem::path& path, const report::Plot& plot);
 
 }  // namespace rockfall::app

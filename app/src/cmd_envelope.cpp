@@ -4,7 +4,7 @@
 
 #include "commands.hpp"
 #include "impact_source.hpp"
-#include "text_format.hpp"
+#include "report/text_format.hpp"
 
 #include "risk/envelope.hpp"
 #include "risk/formulas.hpp"
@@ -86,15 +86,15 @@ std::vector<double> ratios_of(const std::vector<Compared>& compared, const Impac
     return ratios;
 }
 
-std::string percent(double share) { return fmt("%.1f %%", 100.0 * share); }
+std::string percent(double share) { return report::fmt("%.1f %%", 100.0 * share); }
 
 std::string stats_text(const risk::EnvelopeStats& s) {
     return "n = " + std::to_string(s.count) + ", above " + std::to_string(s.above) + " (" +
-           percent(s.share) + ", " + fmt("%.0f %% CI ", 100.0 * s.confidence) +
+           percent(s.share) + ", " + report::fmt("%.0f %% CI ", 100.0 * s.confidence) +
            percent(s.interval.lower) + " .. " + percent(s.interval.upper) + "); ratio min " +
-           fmt("%.3g", s.min) + ", median " + fmt("%.3g", s.median) + ", mean " +
-           fmt("%.3g", s.mean) + ", p95 " + fmt("%.3g", s.p95) + ", p99 " + fmt("%.3g", s.p99) +
-           ", max " + fmt("%.3g", s.max);
+           report::fmt("%.3g", s.min) + ", median " + report::fmt("%.3g", s.median) + ", mean " +
+           report::fmt("%.3g", s.mean) + ", p95 " + report::fmt("%.3g", s.p95) + ", p99 " +
+           report::fmt("%.3g", s.p99) + ", max " + report::fmt("%.3g", s.max);
 }
 
 nlohmann::json stats_json(const risk::EnvelopeStats& s) {
@@ -175,15 +175,16 @@ std::string formula_text(const EnvelopeArgs& args) {
     for (const risk::ImpactShape shape : risk::all_impact_shapes) {
         const risk::ImpactCoefficients c = coefficients_for(args, shape);
         text += std::string(text.empty() ? "" : "; ") + std::string(risk::to_string(shape)) +
-                fmt(" alpha %.3g", c.alpha) + fmt(" beta %.3g", c.beta) +
-                fmt(" lambda %.4g Pa", c.lambda);
+                report::fmt(" alpha %.3g", c.alpha) + report::fmt(" beta %.3g", c.beta) +
+                report::fmt(" lambda %.4g Pa", c.lambda);
     }
     return args.formula + " (" + text + ")";
 }
 
 void run(const EnvelopeArgs& args) {
     if (!(args.confidence > 0.0 && args.confidence < 1.0)) {
-        throw std::invalid_argument(fmt("--confidence = %g: must be in (0, 1)", args.confidence));
+        throw std::invalid_argument(
+            report::fmt("--confidence = %g: must be in (0, 1)", args.confidence));
     }
     if (args.worst < 0) throw std::invalid_argument("--worst must be >= 0");
     const HitVelocity velocity = parse_hit_velocity(args.velocity);

@@ -2,10 +2,11 @@
 // measured (CSV) or simulated (results database) impacts, per shape, with the fit's quality,
 // range and a figure.
 
+#include "atomic_file.hpp"
 #include "commands.hpp"
-#include "fit_figure.hpp"
 #include "impact_source.hpp"
-#include "text_format.hpp"
+#include "report/fit_figure.hpp"
+#include "report/text_format.hpp"
 
 #include "risk/formulas.hpp"
 #include "risk/impact_fit.hpp"
@@ -43,7 +44,7 @@ constexpr double kilo = 1.0e3;
 enum class LambdaSource { identified, given, spheres };
 
 struct Result {
-    ShapeFit fit;
+    report::ShapeFit fit;
     LambdaSource lambda_source = LambdaSource::identified;
 };
 
@@ -168,12 +169,13 @@ const char* lambda_key(LambdaSource source) {
 
 std::string line_text(const risk::ImpactRegression& r) {
     if (r.form == risk::RegressionForm::power) {
-        return fmt("P = %.4g", r.a / kilo) + fmt(" v^%.4g kN", r.b) +
-               fmt(" (v in m/s); R^2 = %.3f on ln P", r.r_squared) +
-               fmt("; sigma = %.3g (of ln P)", r.sigma);
+        return report::fmt("P = %.4g", r.a / kilo) + report::fmt(" v^%.4g kN", r.b) +
+               report::fmt(" (v in m/s); R^2 = %.3f on ln P", r.r_squared) +
+               report::fmt("; sigma = %.3g (of ln P)", r.sigma);
     }
-    return fmt("P = %.4g", r.a / kilo) + fmt(" + %.4g v kN", r.b / kilo) +
-           fmt(" (v in m/s); R^2 = %.3f", r.r_squared) + fmt("; sigma = %.4g kN", r.sigma / kilo);
+    return report::fmt("P = %.4g", r.a / kilo) + report::fmt(" + %.4g v kN", r.b / kilo) +
+           report::fmt(" (v in m/s); R^2 = %.3f", r.r_squared) +
+           report::fmt("; sigma = %.4g kN", r.sigma / kilo);
 }
 
 HitVelocity hit_velocity(const FitArgs& args) {
@@ -193,22 +195,23 @@ void print_text(const FitArgs& args, const ImpactData& data, const Identificatio
         const risk::ImpactCoefficients preset = risk::seed_coefficients(result.fit.shape);
         std::cout << '\n'
                   << risk::to_string(result.fit.shape) << ": " << f.count << " rows\n"
-                  << "  valid for: impact velocity " << fmt("%.4g", f.velocity_min) << " .. "
-                  << fmt("%.4g m/s", f.velocity_max) << ", mass " << fmt("%.4g", f.mass_min)
-                  << " .. " << fmt("%.4g kg", f.mass_max)
-                  << fmt(" (regression at %.4g kg)", f.reference_mass) << '\n'
+                  << "  valid for: impact velocity " << report::fmt("%.4g", f.velocity_min)
+                  << " .. " << report::fmt("%.4g m/s", f.velocity_max) << ", mass "
+                  << report::fmt("%.4g", f.mass_min) << " .. " << report::fmt("%.4g kg", f.mass_max)
+                  << report::fmt(" (regression at %.4g kg)", f.reference_mass) << '\n'
                   << "  mean line: " << line_text(f.regression) << '\n'
-                  << "  lambda = " << fmt("%.4g Pa", c.lambda)
-                  << fmt(" (%.4g MN/m2), ", c.lambda / 1e6) << lambda_text(result.lambda_source)
-                  << '\n'
-                  << "  beta = " << fmt("%.3g", c.beta) << '\n'
-                  << "  alpha = " << fmt("%.3g", c.alpha)
+                  << "  lambda = " << report::fmt("%.4g Pa", c.lambda)
+                  << report::fmt(" (%.4g MN/m2), ", c.lambda / 1e6)
+                  << lambda_text(result.lambda_source) << '\n'
+                  << "  beta = " << report::fmt("%.3g", c.beta) << '\n'
+                  << "  alpha = " << report::fmt("%.3g", c.alpha)
                   << ", identified on the mean + 1 sigma line\n"
                   << "  formula vs lines at the data: mean within "
-                  << fmt("%.1f %%", 100.0 * f.mean_mismatch) << ", mean + 1 sigma within "
-                  << fmt("%.1f %%", 100.0 * f.upper_mismatch) << '\n'
-                  << "  seed 000 preset: lambda " << fmt("%.4g Pa", preset.lambda) << ", alpha "
-                  << fmt("%.3g", preset.alpha) << ", beta " << fmt("%.3g", preset.beta) << '\n';
+                  << report::fmt("%.1f %%", 100.0 * f.mean_mismatch) << ", mean + 1 sigma within "
+                  << report::fmt("%.1f %%", 100.0 * f.upper_mismatch) << '\n'
+                  << "  seed 000 preset: lambda " << report::fmt("%.4g Pa", preset.lambda)
+                  << ", alpha " << report::fmt("%.3g", preset.alpha) << ", beta "
+                  << report::fmt("%.3g", preset.beta) << '\n';
     }
     if (!id.too_few.empty()) {
         std::cout << "\nnot fitted, fewer than " << min_rows << " rows: " << too_few_text(id)
@@ -279,10 +282,11 @@ void run(const FitArgs& args) {
     }
     const Identification id = identify(args, data.rows);
     if (args.svg) {
-        std::vector<ShapeFit> fits;
+        std::vector<report::ShapeFit> fits;
         for (const Result& r : id.results) fits.push_back(r.fit);
         const std::string name = std::filesystem::path(args.input).filename().string();
-        write_svg(*args.svg, fit_figure(fits, "Peak load against impact velocity: " + name));
+        write_svg(*args.svg,
+                  report::fit_figure(fits, "Peak load against impact velocity: " + name));
     }
     if (args.json) {
         std::cout << to_json(args, data, id).dump(2) << '\n';

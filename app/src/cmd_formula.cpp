@@ -1,9 +1,9 @@
 // `rockfall formula NAME`: one impact design formula evaluated, with every input echoed in SI.
 
 #include "commands.hpp"
-#include "text_format.hpp"
+#include "report/text_format.hpp"
+#include "scenario/csv_table.hpp"
 
-#include "app/csv_table.hpp"
 #include "risk/cushion_formulas.hpp"
 #include "risk/design_values.hpp"
 #include "risk/formulas.hpp"
@@ -109,18 +109,19 @@ void add_formula(Report& r, const FormulaArgs& args, const std::string& source) 
 }
 
 void add_mass(Report& r, double mass) {
-    r.add("mass", fmt("%.6g kg", mass) + fmt(" (%.6g t)", mass / kilo),
+    r.add("mass", report::fmt("%.6g kg", mass) + report::fmt(" (%.6g t)", mass / kilo),
           {{"mass_kg", mass}, {"mass_t", mass / kilo}});
 }
 
 void add_kinematics(Report& r, double velocity) {
     const double height = risk::jra_equivalent_height(velocity);
-    r.add("velocity", fmt("%.6g m/s", velocity), {{"velocity_m_s", velocity}});
-    r.add("equivalent height", fmt("%.6g m (v^2 / 2g)", height), {{"equivalent_height_m", height}});
+    r.add("velocity", report::fmt("%.6g m/s", velocity), {{"velocity_m_s", velocity}});
+    r.add("equivalent height", report::fmt("%.6g m (v^2 / 2g)", height),
+          {{"equivalent_height_m", height}});
 }
 
 void add_load(Report& r, const std::string& label, double load) {
-    r.add(label, fmt("%.2f kN", load / kilo) + fmt(" (%.6g N)", load),
+    r.add(label, report::fmt("%.2f kN", load / kilo) + report::fmt(" (%.6g N)", load),
           {{"peak_load_kN", load / kilo}, {"peak_load_N", load}});
 }
 
@@ -152,11 +153,12 @@ Report evaluate_jra(const FormulaArgs& args) {
     if (!preset.empty()) r.add("shape preset", preset, {{"shape", preset}});
     add_mass(r, args.mass);
     add_kinematics(r, velocity);
-    r.add("lambda", fmt("%.6g Pa", c.lambda) + fmt(" (%.6g kN/m2)", c.lambda / kilo),
+    r.add("lambda",
+          report::fmt("%.6g Pa", c.lambda) + report::fmt(" (%.6g kN/m2)", c.lambda / kilo),
           {{"lambda_Pa", c.lambda}, {"lambda_kN_m2", c.lambda / kilo}});
-    r.add("alpha", fmt("%.6g", c.alpha), {{"alpha", c.alpha}});
-    r.add("beta", fmt("%.6g", c.beta), {{"beta", c.beta}});
-    r.add("g", fmt("%.6g m/s2", risk::jra_gravity), {{"g_m_s2", risk::jra_gravity}});
+    r.add("alpha", report::fmt("%.6g", c.alpha), {{"alpha", c.alpha}});
+    r.add("beta", report::fmt("%.6g", c.beta), {{"beta", c.beta}});
+    r.add("g", report::fmt("%.6g m/s2", risk::jra_gravity), {{"g_m_s2", risk::jra_gravity}});
     add_load(r, "peak load", load);
     r.add_validity(
         args.name == "jra"
@@ -173,8 +175,9 @@ double rock_radius(const FormulaArgs& args, Report& r) {
     }
     if (args.density) {
         const double radius = risk::equivalent_radius(args.mass, *args.density);
-        r.add("density", fmt("%.6g kg/m3", *args.density), {{"density_kg_m3", *args.density}});
-        r.add("radius", fmt("%.6g m (sphere of the rock's volume)", radius),
+        r.add("density", report::fmt("%.6g kg/m3", *args.density),
+              {{"density_kg_m3", *args.density}});
+        r.add("radius", report::fmt("%.6g m (sphere of the rock's volume)", radius),
               {{"radius_m", radius}});
         return radius;
     }
@@ -182,7 +185,7 @@ double rock_radius(const FormulaArgs& args, Report& r) {
         required(args.radius,
                  "give the rock --radius (m), or its --density (kg/m3) to use the radius of "
                  "the sphere of its volume");
-    r.add("radius", fmt("%.6g m", radius), {{"radius_m", radius}});
+    r.add("radius", report::fmt("%.6g m", radius), {{"radius_m", radius}});
     return radius;
 }
 
@@ -196,12 +199,14 @@ Report evaluate_cushion(const FormulaArgs& args) {
     const double velocity = impact_velocity(args);
     add_kinematics(r, velocity);
     const double energy = 0.5 * args.mass * velocity * velocity;
-    r.add("kinetic energy", fmt("%.6g J", energy) + fmt(" (%.6g kJ)", energy / kilo),
+    r.add("kinetic energy",
+          report::fmt("%.6g J", energy) + report::fmt(" (%.6g kJ)", energy / kilo),
           {{"kinetic_energy_J", energy}});
     const double radius = rock_radius(args, r);
     const double modulus =
         required(args.modulus, "give --modulus (Pa), the plate-load modulus M_E of the cushion");
-    r.add("cushion modulus M_E", fmt("%.6g Pa", modulus) + fmt(" (%.6g kN/m2)", modulus / kilo),
+    r.add("cushion modulus M_E",
+          report::fmt("%.6g Pa", modulus) + report::fmt(" (%.6g kN/m2)", modulus / kilo),
           {{"cushion_modulus_Pa", modulus}, {"cushion_modulus_kN_m2", modulus / kilo}});
     if (!astra) {
         add_load(r, "peak force",
@@ -215,8 +220,9 @@ Report evaluate_cushion(const FormulaArgs& args) {
         required(args.thickness, "give the cushion --thickness (m) for the astra formula");
     const double phi = required(args.friction_angle,
                                 "give the cushion's --friction-angle (deg) for the astra formula");
-    r.add("cushion thickness", fmt("%.6g m", thickness), {{"cushion_thickness_m", thickness}});
-    r.add("friction angle", fmt("%.6g deg", phi), {{"friction_angle_deg", phi}});
+    r.add("cushion thickness", report::fmt("%.6g m", thickness),
+          {{"cushion_thickness_m", thickness}});
+    r.add("friction angle", report::fmt("%.6g deg", phi), {{"friction_angle_deg", phi}});
     add_load(r, "equivalent static force F_k",
              risk::astra_impact_force({args.mass, velocity, radius, modulus, thickness, phi}));
     r.add_validity(
@@ -226,7 +232,7 @@ Report evaluate_cushion(const FormulaArgs& args) {
 }
 
 Report evaluate_uni(const FormulaArgs& args) {
-    const CsvTable table = CsvTable::read(required(
+    const scenario::CsvTable table = scenario::CsvTable::read(required(
         args.sample, "give --sample FILE.csv with columns velocity_m_s and bounce_height_m"));
     const std::size_t v_column = table.require("velocity_m_s");
     const std::size_t h_column = table.require("bounce_height_m");
@@ -235,17 +241,18 @@ Report evaluate_uni(const FormulaArgs& args) {
     for (std::size_t row = 0; row < table.rows(); ++row) {
         for (const std::size_t column : {v_column, h_column}) {
             if (table.number(row, column) < 0.0) {
-                throw CsvError(table.where(row, column) + " = " + table.text(row, column) +
-                               ": must be >= 0");
+                throw scenario::CsvError(table.where(row, column) + " = " +
+                                         table.text(row, column) + ": must be >= 0");
             }
         }
         speeds.push_back(table.number(row, v_column));
         heights.push_back(table.number(row, h_column));
     }
-    if (speeds.empty()) throw CsvError(table.source() + ": no data rows after the header");
+    if (speeds.empty())
+        throw scenario::CsvError(table.source() + ": no data rows after the header");
     if (!(args.percentile > 0.0 && args.percentile < 100.0)) {
         throw std::invalid_argument(
-            fmt("--percentile = %g %%: must be in (0, 100)", args.percentile));
+            report::fmt("--percentile = %g %%: must be in (0, 100)", args.percentile));
     }
     const risk::DesignValues d =
         risk::uni_design_values(speeds, heights, args.mass, args.percentile / 100.0, args.factors);
@@ -254,27 +261,31 @@ Report evaluate_uni(const FormulaArgs& args) {
     add_formula(r, args, "design values in the manner of UNI 11211-4:2012");
     r.add("sample", table.source() + " (" + std::to_string(speeds.size()) + " rows)",
           {{"sample", table.source()}, {"rows", speeds.size()}});
-    r.add("percentile", fmt("%.6g %%", args.percentile), {{"percentile_percent", args.percentile}});
+    r.add("percentile", report::fmt("%.6g %%", args.percentile),
+          {{"percentile_percent", args.percentile}});
     add_mass(r, args.mass);
-    r.add("characteristic velocity v_t", fmt("%.6g m/s", d.characteristic_speed),
+    r.add("characteristic velocity v_t", report::fmt("%.6g m/s", d.characteristic_speed),
           {{"characteristic_velocity_m_s", d.characteristic_speed}});
-    r.add("characteristic height h_t", fmt("%.6g m", d.characteristic_height),
+    r.add("characteristic height h_t", report::fmt("%.6g m", d.characteristic_height),
           {{"characteristic_height_m", d.characteristic_height}});
     r.add("partial factors",
-          fmt("gamma_Tr %.6g", f.trajectory) + fmt(", gamma_Dp %.6g", f.survey) +
-              fmt(", gamma_VolF1 %.6g", f.volume) + fmt(", gamma_gamma %.6g", f.unit_weight),
+          report::fmt("gamma_Tr %.6g", f.trajectory) + report::fmt(", gamma_Dp %.6g", f.survey) +
+              report::fmt(", gamma_VolF1 %.6g", f.volume) +
+              report::fmt(", gamma_gamma %.6g", f.unit_weight),
           {{"gamma_Tr", f.trajectory},
            {"gamma_Dp", f.survey},
            {"gamma_VolF1", f.volume},
            {"gamma_gamma", f.unit_weight}});
-    r.add("design velocity v_d", fmt("%.6g m/s", d.design_speed),
+    r.add("design velocity v_d", report::fmt("%.6g m/s", d.design_speed),
           {{"design_velocity_m_s", d.design_speed}});
-    r.add("design height h_d", fmt("%.6g m", d.design_height),
+    r.add("design height h_d", report::fmt("%.6g m", d.design_height),
           {{"design_height_m", d.design_height}});
-    r.add("design mass m_d", fmt("%.6g kg", d.design_mass), {{"design_mass_kg", d.design_mass}});
-    r.add("design energy E_d",
-          fmt("%.2f kJ", d.design_energy / kilo) + fmt(" (%.6g J)", d.design_energy),
-          {{"design_energy_J", d.design_energy}, {"design_energy_kJ", d.design_energy / kilo}});
+    r.add("design mass m_d", report::fmt("%.6g kg", d.design_mass),
+          {{"design_mass_kg", d.design_mass}});
+    r.add(
+        "design energy E_d",
+        report::fmt("%.2f kJ", d.design_energy / kilo) + report::fmt(" (%.6g J)", d.design_energy),
+        {{"design_energy_J", d.design_energy}, {"design_energy_kJ", d.design_energy / kilo}});
     r.add_validity(
         "action side only: compare E_d with the barrier's energy class over gamma_E, and "
         "h_d plus the free margin with its height");

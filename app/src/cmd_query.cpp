@@ -1,10 +1,11 @@
 // `rockfall query DB <what>`: questions on a results database written by `rockfall sweep`.
 
+#include "atomic_file.hpp"
 #include "commands.hpp"
-#include "curve_figure.hpp"
-#include "fit_figure.hpp"
-#include "query_report.hpp"
-#include "soil_report.hpp"
+#include "report/curve_figure.hpp"
+#include "report/fit_figure.hpp"
+#include "report/query_report.hpp"
+#include "report/soil_report.hpp"
 
 #include "db/queries.hpp"
 #include "db/results_db.hpp"
@@ -44,9 +45,9 @@ struct QueryArgs {
     std::string worst_by = "reach";
 };
 
-QueryFormat format_of(const QueryArgs& args) {
-    if (args.json) return QueryFormat::json;
-    return args.csv ? QueryFormat::csv : QueryFormat::text;
+report::QueryFormat format_of(const QueryArgs& args) {
+    if (args.json) return report::QueryFormat::json;
+    return args.csv ? report::QueryFormat::csv : report::QueryFormat::text;
 }
 
 db::Grouping grouping_of(const QueryArgs& args) {
@@ -66,21 +67,22 @@ void run_summary(const QueryArgs& args) {
     // A soil database has a summary of its own; every other query is about rock sweeps.
     const db::ResultsDb database = db::ResultsDb::open_any(args.database, false);
     if (database.kind() == db::RunKind::soil_flow) {
-        write_soil_summary(std::cout, format_of(args), args.database, db::read_soil_run(database));
+        report::write_soil_summary(std::cout, format_of(args), args.database,
+                                   db::read_soil_run(database));
         return;
     }
-    write_summary(std::cout, format_of(args), args.database,
-                  db::summarize(database, args.confidence));
+    report::write_summary(std::cout, format_of(args), args.database,
+                          db::summarize(database, args.confidence));
 }
 
 void run_history(const QueryArgs& args) {
     const db::ResultsDb database = db::ResultsDb::open_any(args.database, false);
     const db::SoilRunRecord record = db::read_soil_run(database);
     if (!args.svg.empty()) {
-        write_svg(args.svg, soil_load_figure(record, record.run.scenario_name, nullptr));
+        write_svg(args.svg, report::soil_load_figure(record, record.run.scenario_name, nullptr));
     }
-    write_soil_history(std::cout, format_of(args), args.database, record);
-    if (!args.svg.empty() && format_of(args) == QueryFormat::text) {
+    report::write_soil_history(std::cout, format_of(args), args.database, record);
+    if (!args.svg.empty() && format_of(args) == report::QueryFormat::text) {
         std::cout << "figure written to " << args.svg << '\n';
     }
 }
@@ -91,9 +93,9 @@ void run_percentiles(const QueryArgs& args) {
     std::vector<double> ps;
     for (const double level : args.levels) ps.push_back(level / 100.0);
     const db::ResultsDb database = open_database(args);
-    write_percentiles(std::cout, format_of(args), args.database,
-                      db::percentiles(database, quantity, ps, grouping, args.confidence),
-                      grouping.by);
+    report::write_percentiles(std::cout, format_of(args), args.database,
+                              db::percentiles(database, quantity, ps, grouping, args.confidence),
+                              grouping.by);
 }
 
 void run_exceed(const QueryArgs& args) {
@@ -107,7 +109,7 @@ void run_exceed(const QueryArgs& args) {
     const db::Grouping grouping = grouping_of(args);
     const db::IntervalMethod method = db::parse_interval_method(args.interval);
     const db::ResultsDb database = open_database(args);
-    write_exceedance(
+    report::write_exceedance(
         std::cout, format_of(args), args.database,
         db::exceedance(database, quantity, threshold, grouping, method, args.confidence),
         grouping.by);
@@ -123,12 +125,12 @@ void run_curve(const QueryArgs& args) {
     if (!args.svg.empty()) {
         // The figure first: a failed write must not follow a printed table.
         const std::string stem = std::filesystem::path(args.database).stem().string();
-        write_svg(args.svg,
-                  curve_figure(curve, "Exceedance of " + std::string(db::to_string(quantity)) +
-                                          ": " + stem));
+        write_svg(args.svg, report::curve_figure(curve, "Exceedance of " +
+                                                            std::string(db::to_string(quantity)) +
+                                                            ": " + stem));
     }
-    write_curve(std::cout, format_of(args), args.database, curve, grouping.by);
-    if (!args.svg.empty() && format_of(args) == QueryFormat::text) {
+    report::write_curve(std::cout, format_of(args), args.database, curve, grouping.by);
+    if (!args.svg.empty() && format_of(args) == report::QueryFormat::text) {
         std::cout << "figure written to " << args.svg << '\n';
     }
 }
@@ -139,8 +141,8 @@ void run_worst(const QueryArgs& args) {
         throw std::invalid_argument("--n = " + std::to_string(args.count) + ": must be >= 1");
     }
     const db::ResultsDb database = open_database(args);
-    write_worst(std::cout, format_of(args), args.database, by,
-                db::worst_samples(database, by, args.count));
+    report::write_worst(std::cout, format_of(args), args.database, by,
+                        db::worst_samples(database, by, args.count));
 }
 
 std::vector<std::string> quantity_names() {

@@ -2,9 +2,9 @@
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
-#include "report.hpp"
+#include "report/simulation_report.hpp"
+#include "scenario/scenario_file.hpp"
 
-#include "app/scenario_file.hpp"
 #include "db/results_db.hpp"
 #include "engine/simulation.hpp"
 #include "risk/sampling.hpp"
@@ -51,8 +51,8 @@ Job job_from_database(const SimulateArgs& args) {
                                     ": no such sample (see rockfall query " + args.from +
                                     " summary)");
     // The stored [sweep] table holds the named shapes a sample may have drawn.
-    const ScenarioFile stored =
-        parse_scenario_file(results.run().scenario_text, args.from + " (stored scenario)");
+    const scenario::ScenarioFile stored = scenario::parse_scenario_file(
+        results.run().scenario_text, args.from + " (stored scenario)");
     Job job{risk::sample_scenario(stored.sweep, stored.scenario, record->inputs),
             record->inputs.seed, args.from + " sample " + std::to_string(args.sample),
             std::move(record->outcome)};
@@ -66,7 +66,8 @@ Job job_from_arguments(const SimulateArgs& args) {
     if (args.scenario.empty())
         throw std::invalid_argument("simulate needs a SCENARIO file or --from DB --sample INDEX");
     if (args.sample >= 0) throw std::invalid_argument("--sample needs --from DB");
-    return {load_scenario(args.scenario).scenario, args.seed, args.scenario, std::nullopt};
+    return {scenario::load_scenario(args.scenario).scenario, args.seed, args.scenario,
+            std::nullopt};
 }
 
 /// Trajectory rows as CSV, committed only when the run completed.
@@ -106,17 +107,17 @@ void run_simulate(const SimulateArgs& args) {
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
     if (csv) csv->commit();
 
-    const RunInfo info{job.source, job.seed, elapsed.count()};
+    const report::RunInfo info{job.source, job.seed, elapsed.count()};
     // A replay must reproduce the stored outcome bit for bit (same binary); say so either way.
     const bool replay_matches =
         !job.stored || (job.stored->reach == outcome.rocks[0].reach &&
                         job.stored->stop_time == outcome.rocks[0].stop_time);
     if (args.json) {
-        nlohmann::json json = outcome_json(job.scenario, outcome, info);
+        nlohmann::json json = report::outcome_json(job.scenario, outcome, info);
         if (job.stored) json["replay_matches_database"] = replay_matches;
         std::cout << json.dump(2) << '\n';
     } else {
-        print_summary(std::cout, job.scenario, outcome, info);
+        report::print_summary(std::cout, job.scenario, outcome, info);
         if (job.stored)
             std::cout << (replay_matches
                               ? "replay matches the database's stored outcome\n"

@@ -3,14 +3,15 @@
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
-#include "fit_figure.hpp"
-#include "query_table.hpp"
-#include "soil_report.hpp"
+#include "report/fit_figure.hpp"
+#include "report/query_table.hpp"
+#include "report/soil_report.hpp"
+#include "report/text_format.hpp"
+#include "scenario/load_record.hpp"
+#include "scenario/soil_file.hpp"
+#include "soil_record.hpp"
 #include "sweep_record.hpp"
-#include "text_format.hpp"
 
-#include "app/load_history.hpp"
-#include "app/soil_file.hpp"
 #include "db/soil_run.hpp"
 #include "mpm/soil.hpp"
 #include "mpm/vtk.hpp"
@@ -80,35 +81,37 @@ class VtkFrames {
 // Writes the sampled history (committed only when complete).
 void write_csv(const fs::path& path, const db::SoilRunRecord& record) {
     AtomicFile file(path);
-    print_csv(file.stream(), soil_history(record));
+    report::print_csv(file.stream(), report::soil_history(record));
     file.commit();
 }
 
-void print_comparison(std::ostream& out, const HistoryComparison& c, const LoadHistory& measured,
-                      const db::SoilRunRecord& record) {
+void print_comparison(std::ostream& out, const risk::HistoryComparison& c,
+                      const risk::LoadHistory& measured, const db::SoilRunRecord& record) {
     const char* unit = measured.per_metre ? " kN/m" : " kN";
     const char* impulse_unit = measured.per_metre ? " kN s/m" : " kN s";
-    auto kn = [](double newtons) { return fmt("%.2f", newtons / 1e3); };
+    auto kn = [](double newtons) { return report::fmt("%.2f", newtons / 1e3); };
     out << "compared with the measured wall load in " << measured.source << " (" << c.points
-        << " points in t = " << fmt("%g", c.from) << " to " << fmt("%g", c.to)
-        << " s; simulated: the sampled load, " << filter_text(record)
+        << " points in t = " << report::fmt("%g", c.from) << " to " << report::fmt("%g", c.to)
+        << " s; simulated: the sampled load, " << report::filter_text(record)
         << ", both linear between their points):\n"
         << "  peak: simulated " << kn(c.simulated_peak) << unit << " at "
-        << fmt("%.2f", c.simulated_peak_time) << " s, measured " << kn(c.measured_peak) << unit
-        << " at " << fmt("%.2f", c.measured_peak_time) << " s; simulated / measured "
-        << fmt("%.3f", c.peak_ratio) << '\n'
+        << report::fmt("%.2f", c.simulated_peak_time) << " s, measured " << kn(c.measured_peak)
+        << unit << " at " << report::fmt("%.2f", c.measured_peak_time)
+        << " s; simulated / measured " << report::fmt("%.3f", c.peak_ratio) << '\n'
         << "  impulse: simulated " << kn(c.simulated_impulse) << impulse_unit << ", measured "
         << kn(c.measured_impulse) << impulse_unit << "; simulated / measured "
-        << fmt("%.3f", c.impulse_ratio) << '\n'
+        << report::fmt("%.3f", c.impulse_ratio) << '\n'
         << "  mean load up to the measured peak: simulated / measured "
-        << fmt("%.3f", c.loading_ratio) << '\n'
+        << report::fmt("%.3f", c.loading_ratio) << '\n'
         << "  mean load after the measured peak: simulated / measured "
-        << fmt("%.3f", c.after_peak_ratio) << '\n'
+        << report::fmt("%.3f", c.after_peak_ratio) << '\n'
         << "  RMS difference " << kn(c.rms_difference) << unit << " ("
-        << fmt("%.1f", 100.0 * c.rms_difference / c.measured_peak) << " % of the measured peak)\n";
+        << report::fmt("%.1f", 100.0 * c.rms_difference / c.measured_peak)
+        << " % of the measured peak)\n";
 }
 
-nlohmann::json comparison_json(const HistoryComparison& c, const LoadHistory& measured) {
+nlohmann::json comparison_json(const risk::HistoryComparison& c,
+                               const risk::LoadHistory& measured) {
     const std::string u = measured.per_metre ? "_per_m" : "";
     return {{"measured_file", measured.source},
             {"points", c.points},
@@ -118,28 +121,28 @@ nlohmann::json comparison_json(const HistoryComparison& c, const LoadHistory& me
             {"simulated_peak_time_s", c.simulated_peak_time},
             {"measured_peak_N" + u, c.measured_peak},
             {"measured_peak_time_s", c.measured_peak_time},
-            {"peak_ratio", json_number(c.peak_ratio)},
+            {"peak_ratio", report::json_number(c.peak_ratio)},
             {"simulated_impulse_N_s" + u, c.simulated_impulse},
             {"measured_impulse_N_s" + u, c.measured_impulse},
-            {"impulse_ratio", json_number(c.impulse_ratio)},
-            {"loading_ratio", json_number(c.loading_ratio)},
-            {"after_peak_ratio", json_number(c.after_peak_ratio)},
+            {"impulse_ratio", report::json_number(c.impulse_ratio)},
+            {"loading_ratio", report::json_number(c.loading_ratio)},
+            {"after_peak_ratio", report::json_number(c.after_peak_ratio)},
             {"rms_difference_N" + u, c.rms_difference}};
 }
 
 void run_soil_command(const SoilArgs& args) {
-    const SoilFile file = load_soil_scenario(args.scenario);
+    const scenario::SoilFile file = scenario::load_soil_scenario(args.scenario);
     // Read the measured record and refuse a mismatch (units, or no shared times) now rather
     // than after the run.
-    std::optional<LoadHistory> measured;
+    std::optional<risk::LoadHistory> measured;
     if (!args.measured.empty()) {
-        measured = read_measured_history(args.measured);
+        measured = scenario::read_measured_history(args.measured);
         const mpm::SoilOutput& output = file.scenario.output;
         // The sampled history runs from one interval to the last whole interval.
         const double last =
             std::floor(output.duration / output.sample_interval + 1e-9) * output.sample_interval;
-        check_comparable(file.scenario.numerics.dimension == 2, output.sample_interval, last,
-                         *measured);
+        risk::check_comparable(file.scenario.numerics.dimension == 2, output.sample_interval, last,
+                               *measured);
     }
     // Refuse an existing or unwritable database now rather than after the run.
     if (!args.db.empty()) db::check_new_database(args.db);
@@ -164,23 +167,24 @@ void run_soil_command(const SoilArgs& args) {
     const db::SoilRunRecord record = make_soil_record(file, outcome, times);
     if (!args.csv.empty()) write_csv(args.csv, record);
     if (!args.db.empty()) db::write_soil_run(args.db, record);
-    const LoadHistory filtered = sampled_load(record, true);
-    std::optional<HistoryComparison> comparison;
-    if (measured) comparison = compare_histories(filtered, *measured);
+    const risk::LoadHistory filtered = report::sampled_load(record, true);
+    std::optional<risk::HistoryComparison> comparison;
+    if (measured) comparison = risk::compare_histories(filtered, *measured);
     if (!args.svg.empty()) {
-        write_svg(args.svg, soil_load_figure(record, fs::path(args.scenario).stem().string(),
-                                             measured ? &*measured : nullptr));
+        write_svg(args.svg,
+                  report::soil_load_figure(record, fs::path(args.scenario).stem().string(),
+                                           measured ? &*measured : nullptr));
     }
 
     if (args.json) {
-        nlohmann::json document = soil_json(record);
+        nlohmann::json document = report::soil_json(record);
         document["scenario_file"] = args.scenario;
         if (!args.db.empty()) document["database"] = args.db;
         if (comparison) document["measured_comparison"] = comparison_json(*comparison, *measured);
         std::cout << document.dump(2) << '\n';
         return;
     }
-    print_soil_summary(std::cout, record, args.scenario);
+    report::print_soil_summary(std::cout, record, args.scenario);
     if (comparison) print_comparison(std::cout, *comparison, *measured, record);
     if (!args.svg.empty()) std::cout << "wall-load figure written to " << args.svg << '\n';
     if (frames) std::cout << frames->count() << " VTK frames written to " << args.vtk_dir << '\n';

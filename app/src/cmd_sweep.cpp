@@ -3,11 +3,11 @@
 
 #include "commands.hpp"
 #include "progress.hpp"
-#include "query_report.hpp"
+#include "report/query_report.hpp"
+#include "report/text_format.hpp"
+#include "scenario/scenario_file.hpp"
 #include "sweep_record.hpp"
-#include "text_format.hpp"
 
-#include "app/scenario_file.hpp"
 #include "db/queries.hpp"
 #include "db/results_db.hpp"
 #include "risk/sweep_runner.hpp"
@@ -88,7 +88,7 @@ std::optional<risk::UntilRule> parse_until(const SweepArgs& args) {
 }
 
 // The spec as run: the file's [sweep] table with the command line's overrides.
-risk::SweepSpec effective_spec(const ScenarioFile& file, const SweepArgs& args) {
+risk::SweepSpec effective_spec(const scenario::ScenarioFile& file, const SweepArgs& args) {
     risk::SweepSpec spec = file.has_sweep ? file.sweep : risk::sweep_defaults(file.scenario);
     if (args.samples) spec.samples = *args.samples;
     if (args.seed) spec.seed = *args.seed;
@@ -96,7 +96,7 @@ risk::SweepSpec effective_spec(const ScenarioFile& file, const SweepArgs& args) 
         spec.method = risk::SweepSpec::Method::monte_carlo;
     if (args.method == "latin_hypercube" || args.method == "lhs")
         spec.method = risk::SweepSpec::Method::latin_hypercube;
-    validate_sweep(spec, file.scenario);
+    scenario::validate_sweep(spec, file.scenario);
     return spec;
 }
 
@@ -126,13 +126,13 @@ db::SampleRecord to_record(risk::SampleResult&& result) {
 }
 
 int run_sweep(const SweepArgs& args) {
-    const ScenarioFile file = load_scenario(args.scenario);
+    const scenario::ScenarioFile file = scenario::load_scenario(args.scenario);
     // Samples run on the scenario and [sweep] table as the database stores them (parsed back
     // from its text), so that `simulate --from` replays them bit for bit: a mesh rock's or a
     // named shape's hull read back from stored vertices may list them in another order than
     // the mesh file gave them.
-    const ScenarioFile as_stored =
-        parse_scenario_file(file.text, file.path.string(), file.path.parent_path());
+    const scenario::ScenarioFile as_stored =
+        scenario::parse_scenario_file(file.text, file.path.string(), file.path.parent_path());
     const risk::SweepSpec spec = effective_spec(as_stored, args);
     const std::optional<risk::UntilRule> until = parse_until(args);
     if (until && spec.method == risk::SweepSpec::Method::latin_hypercube)
@@ -192,7 +192,7 @@ int run_sweep(const SweepArgs& args) {
     std::vector<db::SampleRecord> batch;
     auto last_write = std::chrono::steady_clock::now();
     const auto note = [&] {
-        return monitor ? "half-width " + fmt("%.4f", monitor->half_width()) : std::string();
+        return monitor ? "half-width " + report::fmt("%.4f", monitor->half_width()) : std::string();
     };
     while (!runner.finished()) {
         for (risk::SampleResult& result : runner.collect(std::chrono::milliseconds(200))) {
@@ -237,8 +237,8 @@ int run_sweep(const SweepArgs& args) {
     if (monitor && !monitor->stop_at())
         std::cerr << "warning: the target half-width " << until->half_width
                   << " was not reached within " << spec.samples << " samples (it is "
-                  << fmt("%.4f", monitor->half_width()) << "); raise --samples\n";
-    write_summary(std::cout, QueryFormat::text, args.db, db::summarize(results));
+                  << report::fmt("%.4f", monitor->half_width()) << "); raise --samples\n";
+    report::write_summary(std::cout, report::QueryFormat::text, args.db, db::summarize(results));
     return 0;
 }
 

@@ -4,9 +4,9 @@
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
-#include "text_format.hpp"
+#include "report/text_format.hpp"
+#include "scenario/scenario_file.hpp"
 
-#include "app/scenario_file.hpp"
 #include "shapes/mesh_io.hpp"
 #include "shapes/slope.hpp"
 #include "shapes/terrain.hpp"
@@ -35,7 +35,7 @@ struct TerrainArgs {
     std::optional<std::uint64_t> seed;
 };
 
-std::string fmt(double value) { return app::fmt("%.6g", value); }
+std::string fmt(double value) { return report::fmt("%.6g", value); }
 
 std::string triple(const shapes::Vec3& v) { return fmt(v[0]) + " " + fmt(v[1]) + " " + fmt(v[2]); }
 
@@ -61,7 +61,7 @@ Deviation deviation(const shapes::Terrain& terrain, const shapes::Slope& slope) 
     return out;
 }
 
-void describe(const ScenarioFile& file, const shapes::Terrain& terrain, bool json) {
+void describe(const scenario::ScenarioFile& file, const shapes::Terrain& terrain, bool json) {
     const shapes::Slope slope(file.scenario.slope);
     const Deviation d = deviation(terrain, slope);
     const auto array = [](const shapes::Vec3& v) { return nlohmann::json{v[0], v[1], v[2]}; };
@@ -96,7 +96,7 @@ bool generation_options(const TerrainArgs& args) {
 }
 
 void run(const TerrainArgs& args) {
-    const ScenarioFile file = load_scenario(args.scenario);
+    const scenario::ScenarioFile file = scenario::load_scenario(args.scenario);
     const std::shared_ptr<const shapes::Terrain>& terrain = file.scenario.slope.terrain;
     if (terrain && generation_options(args)) {
         throw std::invalid_argument(

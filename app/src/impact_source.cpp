@@ -2,7 +2,8 @@
 
 #include "impact_source.hpp"
 
-#include "app/impact_csv.hpp"
+#include "scenario/impact_csv.hpp"
+
 #include "db/results_db.hpp"
 
 #include <cmath>
@@ -96,7 +97,7 @@ std::string describe(const ImpactData& data, const std::string& input, HitVeloci
 ImpactData load_impacts(const std::filesystem::path& path, HitVelocity velocity) {
     if (is_sqlite_file(path)) return database_impacts(path, velocity);
     ImpactData data;
-    data.rows = read_impact_csv(path);
+    data.rows = scenario::read_impact_csv(path);
     return data;
 }
 

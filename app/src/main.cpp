@@ -1,8 +1,8 @@
 // The `rockfall` program: parses the command line and dispatches to a subcommand.
 
 #include "commands.hpp"
+#include "scenario/scenario_file.hpp"
 
-#include "app/scenario_file.hpp"
 #include "db/results_db.hpp"
 #include "shapes/polyhedron.hpp"
 
@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? 0 : rockfall::app::exit_bad_input;
-    } catch (const rockfall::app::ScenarioError& e) {
+    } catch (const rockfall::scenario::ScenarioError& e) {
         std::cerr << "rockfall: " << e.what() << '\n';
         return rockfall::app::exit_bad_input;
     } catch (const rockfall::shapes::GeometryError& e) {

@@ -33,7 +33,7 @@ std::string utc_now() {
     return text;
 }
 
-db::RunRecord make_run_record(const ScenarioFile& file, const risk::SweepSpec& spec,
+db::RunRecord make_run_record(const scenario::ScenarioFile& file, const risk::SweepSpec& spec,
                               const std::string& stop_rule, const nlohmann::json& settings) {
     db::RunRecord run;
     run.tool_version = ROCKFALL_VERSION;

@@ -2,7 +2,8 @@
 /// What a sweep writes about itself into its results database: the spec as JSON, the hash
 /// that ties a database to its scenario and settings (checked by --resume), the run record.
 
-#include "app/scenario_file.hpp"
+#include "scenario/scenario_file.hpp"
+
 #include "db/results_db.hpp"
 #include "risk/sampling.hpp"
 #include "risk/sweep_runner.hpp"
@@ -30,7 +31,7 @@ std::string identity_hash(const SweepIdentity& identity);
 std::string utc_now();
 
 /// The run record of a new sweep database.
-db::RunRecord make_run_record(const ScenarioFile& file, const risk::SweepSpec& spec,
+db::RunRecord make_run_record(const scenario::ScenarioFile& file, const risk::SweepSpec& spec,
                               const std::string& stop_rule, const nlohmann::json& settings);
 
 /// Throws std::invalid_argument naming the database and what differs when `run` was not made

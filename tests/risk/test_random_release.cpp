@@ -1,4 +1,5 @@
-#include "app/scenario_file.hpp"
+#include "scenario/scenario_file.hpp"
+
 #include "risk/random_release.hpp"
 
 #include <Eigen/Geometry>
@@ -93,8 +94,8 @@ TEST_CASE("a random rock depends on the seed alone and keeps the rest of the bas
     const engine::Scenario a = risk::random_rock_scenario(base, 42);
     const engine::Scenario b = risk::random_rock_scenario(base, 42);
     const engine::Scenario c = risk::random_rock_scenario(base, 43);
-    CHECK(app::format_scenario(a) == app::format_scenario(b));
-    CHECK(app::format_scenario(a) != app::format_scenario(c));
+    CHECK(scenario::format_scenario(a) == scenario::format_scenario(b));
+    CHECK(scenario::format_scenario(a) != scenario::format_scenario(c));
 
     REQUIRE(a.rocks.size() == 1);
     const engine::RockRelease& rock = a.rocks[0];
@@ -104,7 +105,7 @@ TEST_CASE("a random rock depends on the seed alone and keeps the rest of the bas
     CHECK_FALSE(rock.release.random_orientation);
     CHECK(a.name == base.name);
     CHECK(a.slope.segments.size() == base.slope.segments.size());
-    CHECK_NOTHROW(app::validate_scenario(a));
+    CHECK_NOTHROW(scenario::validate_scenario(a));
 }
 
 TEST_CASE("a pinned seed gives the draws of an independent implementation", "[risk][random]") {
@@ -143,7 +144,7 @@ TEST_CASE("random rocks cover the ranges and are valid scenarios", "[risk][rando
         const double radius = shapes::make_rock(rock.rock.kind, rock.rock.size).bounding_radius;
         REQUIRE(std::abs(rock.release.lateral) <=
                 0.5 * base.slope.width - radius - ranges.lateral_margin);
-        REQUIRE_NOTHROW(app::validate_scenario(s));
+        REQUIRE_NOTHROW(scenario::validate_scenario(s));
     }
     // Each kind a third of the time (standard error 11.5); mean size 0.3 (standard error 0.0024).
     REQUIRE(kinds.size() == 3);

@@ -1,6 +1,6 @@
 #include "risk_test_support.hpp"
+#include "scenario/scenario_file.hpp"
 
-#include "app/scenario_file.hpp"
 #include "risk/sampling.hpp"
 #include "shapes/slope.hpp"
 
@@ -173,7 +173,7 @@ TEST_CASE("every sample is a valid scenario with the drawn inputs", "[risk][samp
         for (std::int64_t i = 0; i < spec.samples; ++i) {
             const risk::SampleInputs s = risk::draw_sample(spec, base, i);
             const engine::Scenario scenario = risk::sample_scenario(base, s);
-            REQUIRE_NOTHROW(app::validate_scenario(scenario));
+            REQUIRE_NOTHROW(scenario::validate_scenario(scenario));
             REQUIRE(scenario.rocks.size() == 1);
             const engine::RockRelease& rock = scenario.rocks.front();
             CHECK(rock.rock.kind == s.kind);
@@ -376,7 +376,7 @@ TEST_CASE("kind custom samples the base rock's own shape", "[risk][sampling]") {
     for (std::int64_t i = 0; i < 40; ++i) {
         const risk::SampleInputs s = risk::draw_sample(spec, base, i);
         const engine::Scenario scenario = risk::sample_scenario(base, s);
-        REQUIRE_NOTHROW(app::validate_scenario(scenario));
+        REQUIRE_NOTHROW(scenario::validate_scenario(scenario));
         const engine::RockSpec& drawn = scenario.rocks.front().rock;
         CHECK((drawn.shape != nullptr) == (s.kind == RockKind::custom));
         CHECK_THAT(s.mass, WithinRel(drawn.density * drawn.geometry().properties.volume, 1e-12));

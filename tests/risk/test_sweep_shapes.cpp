@@ -2,8 +2,8 @@
 // frequencies, targets met, reproducibility, rebuilding a sample's shape, and bad specs.
 
 #include "risk_test_support.hpp"
+#include "scenario/scenario_file.hpp"
 
-#include "app/scenario_file.hpp"
 #include "risk/sampling.hpp"
 #include "shapes/measures.hpp"
 #include "shapes/platonic.hpp"
@@ -97,7 +97,7 @@ TEST_CASE("every sample's rock is its shape at its size, with its sphericity", "
     for (std::int64_t i = 0; i < spec.samples; ++i) {
         const risk::SampleInputs s = risk::draw_sample(spec, base, i);
         const engine::Scenario scenario = risk::sample_scenario(base, s);
-        REQUIRE_NOTHROW(app::validate_scenario(scenario));
+        REQUIRE_NOTHROW(scenario::validate_scenario(scenario));
         const engine::RockSpec& rock = scenario.rocks.front().rock;
         const shapes::RockGeometry geometry = rock.geometry();
         CHECK(rock.kind == s.kind);

@@ -1,0 +1,44 @@
+#pragma once
+/// The results of `rockfall query` as text, CSV or JSON. Every number carries its unit: in
+/// text after the value or in the column header, in CSV and JSON as a name suffix.
+
+#include "report/query_table.hpp"
+
+#include "db/queries.hpp"
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rockfall::report {
+
+/// `percentiles`: one row per group and level; `by` names the group column.
+void write_percentiles(std::ostream& out, QueryFormat format, const std::string& database,
+                       const db::PercentileTable& table, db::GroupBy by);
+
+/// `exceed`: one row per group.
+void write_exceedance(std::ostream& out, QueryFormat format, const std::string& database,
+                      const db::ExceedanceTable& table, db::GroupBy by);
+
+/// `curve`: one row per group and threshold.
+void write_curve(std::ostream& out, QueryFormat format, const std::string& database,
+                 const db::ExceedanceCurve& curve, db::GroupBy by);
+
+/// Which samples an exceedance probability is over, in words.
+std::string exceedance_trials(db::Quantity quantity);
+
+/// `worst`: one row per sample, worst first, ranked by `by`.
+void write_worst(std::ostream& out, QueryFormat format, const std::string& database,
+                 db::Quantity by, const std::vector<db::WorstSample>& worst);
+
+/// `summary`: the run, stop reasons, reach, wall and station shares, wall load percentiles.
+void write_summary(std::ostream& out, QueryFormat format, const std::string& database,
+                   const db::Summary& summary);
+
+/// The quantity's output column name with its unit ("reach_m", "impact_energy_J").
+std::string quantity_column(db::Quantity quantity);
+
+/// Which samples a quantity is taken over, in words, for text and JSON.
+std::string population_of(db::Quantity quantity);
+
+}  // namespace rockfall::report

@@ -1,0 +1,27 @@
+#pragma once
+/// Measured or simulated wall impacts read from a CSV file, for `rockfall fit`.
+///
+/// Columns, named in the header in any order (other columns are ignored):
+///   velocity_m_s                  impact velocity just before the hit, m/s (> 0)
+///   peak_force_kN | peak_force_N  peak load, in kN or N as the name says (exactly one; > 0)
+///   mass_kg                       rock mass, kg (> 0)
+///   shape                         sphere, massive or planar (seed 000's shape classes)
+
+#include "scenario/csv_table.hpp"
+
+#include "risk/impact_fit.hpp"
+
+#include <filesystem>
+#include <vector>
+
+namespace rockfall::scenario {
+
+/// The impact rows of a table in SI units (peak force in N). Throws CsvError naming the file,
+/// line and column for a missing column, text in a numeric field, a value out of range or an
+/// unknown shape, and when the table has no data row.
+std::vector<risk::ImpactRow> impact_rows(const CsvTable& table);
+
+/// impact_rows(CsvTable::read(path)).
+std::vector<risk::ImpactRow> read_impact_csv(const std::filesystem::path& path);
+
+}  // namespace rockfall::scenario

@@ -1,0 +1,144 @@
+// Scenario -> complete TOML document, in the order docs/scenarios.md documents the keys.
+
+#include "scenario/scenario_file.hpp"
+#include "scenario_schema.hpp"
+
+#include "shapes/terrain.hpp"
+
+#include <variant>
+
+namespace rockfall::scenario {
+namespace {
+
+using detail::format_number;
+using detail::toml_string;
+
+// TOML floats need a '.' or an exponent ("2600.0", not "2600").
+std::string float_text(double value) {
+    std::string text = format_number(value);
+    if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+    return text;
+}
+
+std::string value_text(double value) { return float_text(value); }
+std::string value_text(int value) { return std::to_string(value); }
+std::string value_text(bool value) { return value ? "true" : "false"; }
+std::string value_text(const engine::Vec3& value) {
+    return "[" + float_text(value.x()) + ", " + float_text(value.y()) + ", " +
+           float_text(value.z()) + "]";
+}
+
+class Writer {
+  public:
+    void header(std::string_view name) { out_ += "\n[" + std::string(name) + "]\n"; }
+    void array_header(std::string_view name) { out_ += "\n[[" + std::string(name) + "]]\n"; }
+    void line(std::string_view key, const std::string& value) {
+        out_ += std::string(key) + " = " + value + "\n";
+    }
+    template <class S, std::size_t N>
+    void fields(const S& object, const detail::Fields<S, N>& fields) {
+        for (const detail::Field<S>& field : fields) {
+            std::visit([&](auto member) { line(field.key, value_text(object.*member)); },
+                       field.member);
+        }
+    }
+    template <class T, class Text>
+    void list(std::string_view key, const std::vector<T>& values, Text text) {
+        std::string items;
+        for (std::size_t i = 0; i < values.size(); ++i)
+            items += (i == 0 ? "" : ", ") + text(values[i]);
+        line(key, "[" + items + "]");
+    }
+    std::string str() && { return std::move(out_); }
+
+  private:
+    std::string out_;
+};
+
+std::string_view model_name(engine::WallContact::Model model) {
+    for (const auto& entry : detail::wall_model_names) {
+        if (entry.value == model) return entry.name;
+    }
+    return "?";
+}
+
+}  // namespace
+
+std::string format_scenario(const engine::Scenario& s) {
+    Writer w;
+    w.line("name", toml_string(s.name));
+    w.fields(s, detail::scenario_fields);
+    w.list("stations", s.stations, [](double v) { return float_text(v); });
+
+    w.header("slope");
+    w.fields(s.slope, detail::slope_fields);
+    for (const shapes::SlopeSegment& segment : s.slope.segments) {
+        w.array_header("slope.segments");
+        w.fields(segment, detail::segment_fields);
+    }
+    w.header("slope.side_walls");
+    w.fields(s.slope.side_walls, detail::side_wall_fields);
+    w.header("slope.bars");
+    w.fields(s.slope.bars, detail::bar_fields);
+    w.list("segments", s.slope.bars.segments, [](int v) { return std::to_string(v); });
+    w.header("slope.wall");
+    w.fields(s.slope.wall, detail::wall_fields);
+    if (s.slope.terrain) {
+        // The mesh itself, placed and cleaned, so that the text stands alone.
+        const shapes::Terrain& terrain = *s.slope.terrain;
+        w.header("slope.terrain");
+        w.line("name", toml_string(terrain.name()));
+        std::string points;
+        for (const shapes::Vec3& v : terrain.mesh().vertices) {
+            points += "\n    " + value_text(engine::Vec3(v)) + ",";
+        }
+        w.line("vertices", "[" + points + "\n]");
+        std::string corners;
+        for (const auto& [a, b, c] : terrain.mesh().triangles) {
+            corners += "\n    [" + std::to_string(a) + ", " + std::to_string(b) + ", " +
+                       std::to_string(c) + "],";
+        }
+        w.line("triangles", "[" + corners + "\n]");
+    }
+
+    const std::pair<std::string_view, const engine::Material*> materials[] = {
+        {"materials.slope", &s.materials.slope},
+        {"materials.bars", &s.materials.bars},
+        {"materials.side_walls", &s.materials.side_walls},
+        {"materials.wall", &s.materials.wall},
+    };
+    for (const auto& [name, material] : materials) {
+        w.header(name);
+        w.fields(*material, detail::material_fields);
+    }
+
+    w.header("wall_contact");
+    w.line("model", toml_string(model_name(s.wall_contact.model)));
+    w.fields(s.wall_contact, detail::wall_contact_fields);
+
+    for (const engine::RockRelease& rock : s.rocks) {
+        w.array_header("rocks");
+        if (rock.rock.shape) {
+            // The hull itself, so that the text stands alone (no mesh file to look for).
+            w.line("shape_name", toml_string(rock.rock.shape->name));
+            std::string points;
+            for (const shapes::Vec3& v : rock.rock.shape->hull.vertices) {
+                points += "\n    " + value_text(engine::Vec3(v)) + ",";
+            }
+            w.line("vertices", "[" + points + "\n]");
+        } else {
+            w.line("kind", toml_string(shapes::to_string(rock.rock.kind)));
+        }
+        w.fields(rock.rock, detail::rock_fields);
+        w.header("rocks.material");
+        w.fields(rock.rock.material, detail::material_fields);
+        w.header("rocks.release");
+        w.fields(rock.release, detail::release_fields);
+    }
+
+    w.header("numerics");
+    w.fields(s.numerics, detail::numerics_fields);
+    return std::move(w).str();
+}
+
+}  // namespace rockfall::scenario
