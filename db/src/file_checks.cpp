@@ -1,13 +1,18 @@
 #include "file_checks.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <random>
+#include <sys/file.h>
 #include <system_error>
 #include <unistd.h>
+#include <vector>
 
 namespace rockfall::db {
 namespace {
@@ -51,6 +56,60 @@ std::string percent_encoded(const std::string& text) {
     return out;
 }
 
+constexpr std::string_view part_suffix = ".part";
+constexpr std::string_view journal_suffix = "-journal";
+
+// Whether `name` is a part file of `target` (".NAME.<16 hex digits>.part"), as TemporaryFile
+// names them; `journal` for its SQLite rollback journal (the same name + "-journal").
+bool is_part_name(const std::string& name, const fs::path& target, bool journal) {
+    const std::string prefix = "." + target.filename().string() + ".";
+    const std::size_t suffix = part_suffix.size() + (journal ? journal_suffix.size() : 0);
+    if (name.size() != prefix.size() + 16 + suffix || name.rfind(prefix, 0) != 0) return false;
+    const std::string_view rest = std::string_view(name).substr(prefix.size());
+    for (std::size_t i = 0; i < 16; ++i) {
+        if (std::isxdigit(static_cast<unsigned char>(rest[i])) == 0) return false;
+    }
+    return rest.substr(16, part_suffix.size()) == part_suffix &&
+           (!journal || rest.substr(16 + part_suffix.size()) == journal_suffix);
+}
+
+// A live creator holds an exclusive flock() on its part file (TemporaryFile); the kernel drops
+// it when the process ends, however it ends. flock() locks are separate from the fcntl() locks
+// SQLite takes, so neither disturbs the other.
+bool held_by_live_process(const fs::path& part) {
+    const int fd = ::open(part.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool held = ::flock(fd, LOCK_EX | LOCK_NB) != 0;
+    ::close(fd);
+    return held;
+}
+
+struct PartFiles {
+    std::vector<fs::path> stale;  // part files and journals no live process holds
+    std::vector<fs::path> live;   // part files a running rockfall is building
+};
+
+PartFiles part_files(const fs::path& target) {
+    PartFiles found;
+    std::error_code error;
+    const fs::path directory = directory_of(target);
+    for (fs::directory_iterator it(directory, error), end; !error && it != end;
+         it.increment(error)) {
+        const std::string name = it->path().filename().string();
+        if (is_part_name(name, target, false)) {
+            (held_by_live_process(it->path()) ? found.live : found.stale).push_back(it->path());
+        } else if (is_part_name(name, target, true)) {
+            const fs::path part = directory / name.substr(0, name.size() - journal_suffix.size());
+            if (!fs::exists(part, error) || !held_by_live_process(part)) {
+                found.stale.push_back(it->path());
+            }
+        }
+    }
+    // The part file itself first, its journal after, so that messages name the part file.
+    std::sort(found.stale.begin(), found.stale.end());
+    return found;
+}
+
 }  // namespace
 
 void require_creatable(const fs::path& path) {
@@ -74,6 +133,19 @@ void require_database_file(const fs::path& path, bool writable) {
     std::error_code error;
     const fs::file_status status = fs::status(path, error);
     if (!fs::exists(status)) {
+        const PartFiles parts = part_files(path);
+        if (!parts.live.empty()) {
+            refuse(path, ": no such file yet; another rockfall is creating it (" +
+                             parts.live.front().filename().string() + "): wait for it to finish");
+        }
+        if (!parts.stale.empty()) {
+            refuse(path,
+                   ": no such file; the rockfall that was creating it was stopped before "
+                   "it stored anything, and left its unfinished hidden file " +
+                       parts.stale.front().filename().string() +
+                       " beside it: run the same command without --resume, which removes "
+                       "it and starts again");
+        }
         refuse(path, ": no such file; give a results database written by `rockfall sweep`");
     }
     if (!fs::is_regular_file(status)) {
@@ -131,6 +203,11 @@ std::string immutable_uri(const fs::path& path) {
     return "file:" + percent_encoded(fs::absolute(path).string()) + "?immutable=1";
 }
 
+void remove_stale_part_files(const fs::path& target) {
+    std::error_code ignored;
+    for (const fs::path& stale : part_files(target).stale) fs::remove(stale, ignored);
+}
+
 TemporaryFile::TemporaryFile(const fs::path& target) {
     std::random_device device;
     const auto tag = (static_cast<unsigned long long>(device()) << 32U) ^ device() ^
@@ -138,12 +215,25 @@ TemporaryFile::TemporaryFile(const fs::path& target) {
     std::array<char, 17> hex{};
     std::snprintf(hex.data(), hex.size(), "%016llx", tag);
     path_ = directory_of(target) / ("." + target.filename().string() + "." + hex.data() + ".part");
+    // Created here (SQLite takes an empty file as an empty database) and locked for this
+    // object's lifetime, so that the next run tells a killed creator's file from a live one.
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd_ < 0 || ::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+        const std::string reason = std::strerror(errno);
+        if (fd_ >= 0) ::close(fd_);
+        std::error_code ignored;
+        if (fd_ >= 0) fs::remove(path_, ignored);
+        throw DatabaseError("cannot create " + target.string() + ": creating its temporary file " +
+                                path_.string() + " failed: " + reason,
+                            Kind::bad_file);
+    }
 }
 
 TemporaryFile::~TemporaryFile() {
     std::error_code ignored;
     fs::remove(path_, ignored);
     fs::remove(path_.string() + "-journal", ignored);
+    ::close(fd_);
 }
 
 void publish(const TemporaryFile& temporary, const fs::path& target) {

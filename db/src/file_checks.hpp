@@ -28,8 +28,13 @@ bool read_only_location(const std::filesystem::path& path);
 /// The SQLite URI that opens `path` read-only and immutable (no locks, no -shm).
 std::string immutable_uri(const std::filesystem::path& path);
 
-/// A uniquely named file in the directory of a database being created, removed (with its
-/// SQLite journal) on destruction unless published.
+/// Removes the part files of `target` (and their journals) that a killed rockfall left: those
+/// no live process holds. A part file another rockfall is building stays.
+void remove_stale_part_files(const std::filesystem::path& target);
+
+/// A uniquely named file in the directory of a database being created (".NAME.<16 hex>.part"),
+/// created empty and held under an exclusive flock() while this object lives, removed (with its
+/// SQLite journal) on destruction; publish() links it to its target first.
 class TemporaryFile {
   public:
     /// A name beside `target`, hidden, that no other process uses.
@@ -42,6 +47,7 @@ class TemporaryFile {
 
   private:
     std::filesystem::path path_;
+    int fd_ = -1;
 };
 
 /// Moves the finished temporary file to `target` without ever replacing an existing file;

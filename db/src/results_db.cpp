@@ -6,10 +6,13 @@
 #include "schema.hpp"
 #include "sqlite.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <chrono>
 #include <functional>
 #include <string>
 #include <system_error>
+#include <thread>
 #include <utility>
 
 namespace rockfall::db {
@@ -126,6 +129,49 @@ RunKind read_kind(sqlite3* db, const fs::path& path) {
                         Kind::bad_file);
 }
 
+// Copies every committed page from the -wal into the database file, so that the file alone
+// holds the whole run. A FULL checkpoint waits (busy handler) while another connection reads an
+// older snapshot, and is retried until `wait` has passed (SQLite, "Write-Ahead Logging", sec. 3
+// and sqlite3_wal_checkpoint_v2). Then, without waiting, the -wal is truncated and the file
+// leaves WAL mode: both need every other connection closed, and a file in WAL mode whose pages
+// are all in it is as whole (its -wal is empty).
+void make_whole(sqlite3* db, const fs::path& path, std::chrono::milliseconds wait) {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point deadline = Clock::now() + wait;
+    for (int attempt = 1;; ++attempt) {
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+        sqlite3_busy_timeout(db, static_cast<int>(std::max<std::int64_t>(1, left.count())));
+        int frames = -1;
+        int copied = -1;
+        const int code =
+            sqlite3_wal_checkpoint_v2(db, nullptr, SQLITE_CHECKPOINT_FULL, &frames, &copied);
+        const bool busy = (code & 0xff) == SQLITE_BUSY || (code & 0xff) == SQLITE_LOCKED;
+        if (code == SQLITE_OK && frames == copied) break;
+        if (code != SQLITE_OK && !busy) {
+            sql::fail(db, code, path, "copying the -wal into the database file");
+        }
+        if (Clock::now() >= deadline) {
+            sqlite3_busy_timeout(db, busy_timeout_ms);
+            const std::string file = path.string();
+            throw DatabaseError(
+                file + ": another program kept a read transaction open on it for " +
+                    std::to_string(wait.count()) + " ms (" + std::to_string(attempt) +
+                    " attempts), so the last samples are in " + file +
+                    "-wal but not yet in the file itself; keep the two files together (they "
+                    "hold every sample) until that program has closed the file, then make it "
+                    "whole with: sqlite3 '" +
+                    file + "' 'PRAGMA journal_mode = DELETE'",
+                Kind::failure);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    sqlite3_busy_timeout(db, 0);
+    sqlite3_wal_checkpoint_v2(db, nullptr, SQLITE_CHECKPOINT_TRUNCATE, nullptr, nullptr);
+    sqlite3_exec(db, "PRAGMA journal_mode = DELETE", nullptr, nullptr, nullptr);
+    sqlite3_busy_timeout(db, busy_timeout_ms);
+}
+
 void insert_run(sqlite3* db, const fs::path& path, const RunRecord& run, RunKind kind) {
     sql::Statement insert(db, path,
                           "INSERT INTO run (id, kind, tool_version, build, scenario_name, "
@@ -188,6 +234,7 @@ std::string_view to_string(RunKind kind) {
 void create_database_file(const fs::path& path, const RunRecord& run, RunKind kind,
                           const std::function<void(sqlite3*)>& fill) {
     require_creatable(path);
+    remove_stale_part_files(path);
     TemporaryFile temporary(path);
     build_database(temporary.path(), path, run, kind, fill);
     publish(temporary, path);
@@ -200,6 +247,7 @@ ResultsDb::ResultsDb(ResultsDb&& other) noexcept
     : db_(std::exchange(other.db_, nullptr)),
       path_(std::move(other.path_)),
       writable_(other.writable_),
+      writing_(other.writing_),
       statements_(std::move(other.statements_)) {}
 
 ResultsDb& ResultsDb::operator=(ResultsDb&& other) noexcept {
@@ -209,6 +257,7 @@ ResultsDb& ResultsDb::operator=(ResultsDb&& other) noexcept {
         db_ = std::exchange(other.db_, nullptr);
         path_ = std::move(other.path_);
         writable_ = other.writable_;
+        writing_ = other.writing_;
         statements_ = std::move(other.statements_);
     }
     return *this;
@@ -243,15 +292,13 @@ ResultsDb ResultsDb::open_any(const fs::path& path, bool writable) {
 ResultsDb ResultsDb::open_checked(const fs::path& path, bool writable, bool any_kind) {
     require_database_file(path, writable);
     Connection connection;
-    if (writable) {
-        open_connection(connection, path, path.string(), SQLITE_OPEN_READWRITE);
-    } else {
-        const bool immutable = read_only_location(path);
-        open_connection(connection, path, immutable ? immutable_uri(path) : path.string(),
-                        SQLITE_OPEN_READONLY | (immutable ? SQLITE_OPEN_URI : 0));
-    }
+    const bool immutable = !writable && read_only_location(path);
+    // Every check runs on a read-only connection, so that a refused file (and its -wal or
+    // -journal) keeps every byte; the caller's own checks (--resume's seed and hash) read
+    // through the writer's connection before its first write, which changes nothing either.
+    open_connection(connection, path, immutable ? immutable_uri(path) : path.string(),
+                    SQLITE_OPEN_READONLY | (immutable ? SQLITE_OPEN_URI : 0));
     check_identity(connection.db, path);
-    // Before the writer's pragmas: a refused file is never changed.
     if (!any_kind && read_kind(connection.db, path) != RunKind::rock_sweep) {
         throw DatabaseError(path.string() +
                                 " holds a soil flow (written by `rockfall soil --db`), not a rock "
@@ -259,17 +306,31 @@ ResultsDb ResultsDb::open_checked(const fs::path& path, bool writable, bool any_
                                 path.string() + " summary` and `history` read it",
                             Kind::bad_file);
     }
-    if (writable) {
-        set_writer_pragmas(connection.db, path);
-        // A sweep appends to this file for hours: check it once now rather than fail later.
-        check_integrity(connection.db, path);
-    } else {
+    if (!writable) {
         // Queries scan whole tables: reading pages through a memory map rather than read()
         // calls saves the copies (measured a fifth of a one-million-row query). SQLite caps
         // the size at its compile-time limit.
         sql::exec(connection.db, path, "PRAGMA mmap_size = 2147483648", "setting up the reader");
+        return ResultsDb(connection.release(), path, false);
     }
-    return ResultsDb(connection.release(), path, writable);
+    // A sweep appends to this file for hours: check it once now rather than fail later.
+    check_integrity(connection.db, path);
+    const int code = sqlite3_close(connection.release());
+    if (code != SQLITE_OK) sql::fail(nullptr, code, path, "closing the checking connection");
+    Connection writer;
+    open_connection(writer, path, path.string(), SQLITE_OPEN_READWRITE);
+    // Until the first write the file stays as it is: closing this connection must not
+    // checkpoint a -wal left by a crash (begin_writing turns it back on).
+    sqlite3_db_config(writer.db, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr);
+    return ResultsDb(writer.release(), path, true);
+}
+
+void ResultsDb::begin_writing() {
+    require_writable(*this, "write");
+    if (writing_) return;
+    set_writer_pragmas(db_, path_);
+    sqlite3_db_config(db_, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 0, nullptr);
+    writing_ = true;
 }
 
 RunKind ResultsDb::kind() const { return read_kind(db_, path_); }
@@ -304,6 +365,7 @@ RunRecord ResultsDb::run() const {
 
 void ResultsDb::write_batch(const std::vector<SampleRecord>& samples) {
     require_writable(*this, "write samples");
+    begin_writing();
     if (!statements_) statements_ = std::make_unique<Statements>(db_, path_);
     sql::Transaction transaction(db_, path_);
     for (const SampleRecord& record : samples) statements_->write(record);
@@ -320,6 +382,7 @@ std::vector<std::int64_t> ResultsDb::stored_samples() const {
 
 void ResultsDb::delete_samples_from(std::int64_t first) {
     require_writable(*this, "delete samples");
+    begin_writing();
     sql::Transaction transaction(db_, path_);
     // Children first: the foreign keys point at samples.
     for (const char* table : {"trajectories", "wall_impacts", "stations", "outcomes", "samples"}) {
@@ -331,18 +394,13 @@ void ResultsDb::delete_samples_from(std::int64_t first) {
     transaction.commit();
 }
 
-void ResultsDb::finish(const std::string& status, const std::string& finished_at) {
+void ResultsDb::finish(const std::string& status, const std::string& finished_at,
+                       std::chrono::milliseconds reader_wait) {
     require_writable(*this, "record the end of the run");
+    begin_writing();
     sql::Statement update(db_, path_, "UPDATE run SET status = ?, finished_at = ? WHERE id = 1");
     sql::Binder(update).text(status).text(finished_at).run();
-    // Back to a rollback journal, which checkpoints the WAL into the file and removes the -wal
-    // and -shm files: a finished database is one self-contained file that can be copied or
-    // read from a read-only place. open(writable) returns it to WAL. While a reader has the
-    // file open SQLite refuses the switch; the file then stays in WAL mode, equally valid, so
-    // the result is deliberately not checked, and the switch does not wait for the reader.
-    sqlite3_busy_timeout(db_, 0);
-    sqlite3_exec(db_, "PRAGMA journal_mode = DELETE", nullptr, nullptr, nullptr);
-    sqlite3_busy_timeout(db_, busy_timeout_ms);
+    make_whole(db_, path_, reader_wait);
 }
 
 std::optional<SampleRecord> ResultsDb::sample(std::int64_t index) const {

@@ -216,6 +216,10 @@ std::vector<SweepProblem> find_problems(const SweepSpec& spec, const engine::Sce
     }
     if (spec.samples < 1) {
         problems.push_back({"sweep.samples", std::to_string(spec.samples) + ": must be >= 1"});
+    } else if (spec.samples > max_samples) {
+        problems.push_back({"sweep.samples", std::to_string(spec.samples) + ": must be in [1, " +
+                                                 std::to_string(max_samples) +
+                                                 "], the most one sweep plans"});
     }
     const bool shapes_ok = detail::check_shapes(problems, spec, base);
     if (spec.sphericity) {

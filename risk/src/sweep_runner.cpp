@@ -3,9 +3,12 @@
 #include "engine/simulation.hpp"
 #include "risk/statistics.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
+#include <system_error>
 #include <utility>
 
 namespace rockfall::risk {
@@ -32,9 +35,25 @@ SweepRunner::SweepRunner(const SweepSpec& spec, const engine::Scenario& base,
                          std::vector<std::int64_t> pending, const RunnerOptions& options)
     : spec_(spec), base_(base), pending_(std::move(pending)), options_(options) {
     assert(options.threads >= 1);
-    running_ = options.threads;
-    workers_.reserve(static_cast<std::size_t>(options.threads));
-    for (int i = 0; i < options.threads; ++i) workers_.emplace_back([this] { work(); });
+    // A worker beyond one per sample would find nothing to take; not starting it also keeps
+    // `--threads 1024 --samples 4` to 4 threads.
+    const std::size_t count = std::min(static_cast<std::size_t>(options.threads),
+                                       std::max<std::size_t>(pending_.size(), 1));
+    running_ = static_cast<int>(count);
+    workers_.reserve(count);
+    try {
+        for (std::size_t i = 0; i < count; ++i) workers_.emplace_back([this] { work(); });
+    } catch (const std::system_error& error) {
+        // The system refused a thread (its limit on threads or memory): the started workers
+        // are joined, as a std::thread may not be destroyed while it runs.
+        const std::size_t started = workers_.size();
+        stop();
+        for (std::thread& worker : workers_) worker.join();
+        throw std::runtime_error("the system refused worker thread " + std::to_string(started + 1) +
+                                 " of " + std::to_string(count) + " (" + error.what() +
+                                 "): use at most " + std::to_string(started) +
+                                 " worker threads here");
+    }
 }
 
 SweepRunner::~SweepRunner() {

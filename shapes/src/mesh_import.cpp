@@ -1,3 +1,5 @@
+#include "mesh_header.hpp"
+
 #include "shapes/mass_properties.hpp"
 #include "shapes/measures.hpp"
 #include "shapes/mesh_io.hpp"
@@ -108,6 +110,7 @@ std::vector<Vec3> import_mesh(const fs::path& file, std::vector<std::array<int, 
                        ": use .obj, .stl, .ply, .off, .gltf or .glb (or another format assimp "
                        "reads)");
     }
+    check_mesh_header(file, lower_extension(file));
     // No post-processing on reading: a hull needs only the vertices, and assimp's steps reject
     // point clouds (meshes without faces). assimp logs nothing unless a logger is created.
     Assimp::Importer importer;
@@ -128,6 +131,12 @@ std::vector<Vec3> import_mesh(const fs::path& file, std::vector<std::array<int, 
         collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), points, triangles);
     }
     if (points.empty()) fail(file, "contains no vertices (empty mesh)");
+    if (points.size() > max_mesh_vertices) {
+        fail(file, "has " + std::to_string(points.size()) + " vertices, more than the " +
+                       std::to_string(max_mesh_vertices) +
+                       " a mesh file may have (max_mesh_vertices): simplify it first, e.g. by "
+                       "quadric decimation in MeshLab or Blender");
+    }
     const auto bad =
         std::find_if(points.begin(), points.end(), [](const Vec3& p) { return !p.allFinite(); });
     if (bad != points.end()) {
@@ -217,6 +226,12 @@ ConvexPolyhedron read_mesh_hull(const fs::path& file, const MeshScaling& scaling
         hull = convex_hull(points);
     } catch (const GeometryError& error) {
         fail(file, error.what());
+    }
+    if (hull.vertices.size() > max_hull_vertices) {
+        fail(file, "its convex hull has " + std::to_string(hull.vertices.size()) +
+                       " vertices, more than the " + std::to_string(max_hull_vertices) +
+                       " a rock may have (max_hull_vertices; each costs collision time): "
+                       "simplify the mesh first, e.g. by quadric decimation in MeshLab or Blender");
     }
     return scaled_hull(hull, scaling, "mesh file " + quoted(file));
 }

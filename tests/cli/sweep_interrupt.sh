@@ -9,13 +9,21 @@ rm -rf "$work" && mkdir -p "$work"
 db="$work/interrupted.db"
 "$rockfall" sweep "$scenario" --db "$db" --threads 1 --samples 600 >"$work/out.txt" 2>&1 &
 pid=$!
-# Wait until some samples are stored, then interrupt.
-for _ in $(seq 100); do
+# Wait until some samples are stored, then interrupt. The poll must not create the file: the
+# sqlite3 shell creates an empty database at a missing path, which rockfall then refuses as an
+# existing file. So only a file that exists is opened, and read-only (mode=ro creates nothing).
+n=0
+for _ in $(seq 300); do
     sleep 0.1
-    n=$(sqlite3 "$db" "SELECT count(*) FROM samples" 2>/dev/null || echo 0)
+    kill -0 "$pid" 2>/dev/null || break
+    [ -f "$db" ] || continue
+    n=$(sqlite3 "file:$db?mode=ro" "SELECT count(*) FROM samples" 2>/dev/null || echo 0)
     [ "${n:-0}" -gt 0 ] && break
 done
-kill -INT "$pid"
+if ! kill -INT "$pid" 2>/dev/null; then
+    cat "$work/out.txt"
+    echo "the sweep ended before it could be interrupted ($n samples seen)"; exit 1
+fi
 set +e
 wait "$pid"
 code=$?

@@ -187,8 +187,10 @@ TEST_CASE("rocks on the triangulated seed profile run out as on the box slope",
         double squares = 0.0;
         double box_sum = 0.0;
         const auto toe_speed = [&](std::uint64_t seed) {
-            const engine::StationCrossing& toe =
-                engine::simulate(scenario, seed).rocks.front().stations[0];
+            // The outcome is kept: a reference into the temporary simulate() returns would
+            // dangle past this statement (AddressSanitizer: heap-use-after-free).
+            const engine::Outcome outcome = engine::simulate(scenario, seed);
+            const engine::StationCrossing& toe = outcome.rocks.front().stations[0];
             return toe.reached ? toe.speed : 0.0;
         };
         for (int seed = 1; seed <= kSeeds; ++seed) {

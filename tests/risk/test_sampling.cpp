@@ -331,6 +331,15 @@ TEST_CASE("impossible sweep specs are rejected naming the key", "[risk][sampling
         CHECK_THAT(error.what(), Contains("sweep.samples = 0: must be >= 1"));
     }
 
+    // --samples 1099511627776 once ran out of memory building the list of samples to run.
+    risk::SweepSpec huge = good;
+    huge.samples = std::int64_t{1} << 40;
+    REQUIRE(problem_keys(huge, base) == std::vector<std::string>{"sweep.samples"});
+    CHECK(risk::find_problems(huge, base).front().message ==
+          "1099511627776: must be in [1, 100000000], the most one sweep plans");
+    huge.samples = risk::max_samples;
+    CHECK(problem_keys(huge, base).empty());
+
     risk::SweepSpec mismatch = good;
     mismatch.kind_weights = {1.0};
     CHECK(problem_keys(mismatch, base) == std::vector<std::string>{"sweep.rock.kind"});

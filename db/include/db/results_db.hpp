@@ -15,6 +15,7 @@
 #include "engine/outcome.hpp"
 #include "risk/sampling.hpp"
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -108,9 +109,14 @@ class ResultsDb {
     /// non-SQLite, foreign (application_id), damaged (missing tables) or newer-schema file, and
     /// when writable for a read-only file or directory (no write bit counts as read-only even for
     /// root) or a file failing SQLite's quick_check (a full read: about 1.5 s CPU for one
-    /// million samples). Nothing in the file changes. Read-only opens of a file in a read-only
-    /// directory use SQLite's immutable mode, refused when a -wal file holds unmerged samples.
-    /// A database holding a soil flow rather than a rock sweep is refused too (bad_file).
+    /// million samples). The checks read through a read-only connection, and a writable
+    /// database changes nothing in the file, its -wal or -journal until the first write
+    /// (write_batch, delete_samples_from, finish), which switches it to WAL: a file refused
+    /// here or by the caller's own checks keeps every byte. Read-only opens of a file in a
+    /// read-only directory use SQLite's immutable mode, refused when a -wal file holds unmerged
+    /// samples. A database holding a soil flow rather than a rock sweep is refused too
+    /// (bad_file). A missing file beside a hidden part file left by a killed `rockfall sweep`
+    /// (`.NAME.<hex>.part`) is refused with a message saying so.
     static ResultsDb open(const std::filesystem::path& path, bool writable);
 
     /// Opens a database of either kind with the checks of open(); kind() says which it is.
@@ -141,10 +147,15 @@ class ResultsDb {
     void delete_samples_from(std::int64_t first);
 
     /// Records the end of the run: status ("running", "complete" or "interrupted") and
-    /// finished_at. Also leaves WAL mode for a rollback journal when no reader has the file
-    /// open, so a finished database is one self-contained file (open(writable) returns it to
-    /// WAL).
-    void finish(const std::string& status, const std::string& finished_at);
+    /// finished_at, then makes the file whole: every sample is copied from the -wal into the
+    /// file itself, waiting up to `reader_wait` for other programs reading it (an sqlite3 shell,
+    /// pandas, `rockfall query`) to finish their read transactions. The file then leaves WAL
+    /// mode for a rollback journal, so that no -wal or -shm remain, unless another connection is
+    /// still open: the file stays in WAL mode then, with everything in it and an empty -wal.
+    /// Throws DatabaseError (failure), saying what to do, when a reader held its transaction
+    /// for all of `reader_wait` (the -wal then still holds samples the file lacks).
+    void finish(const std::string& status, const std::string& finished_at,
+                std::chrono::milliseconds reader_wait = std::chrono::seconds(10));
 
     /// The stored sample with its outcome (trajectory included); empty when absent. Not
     /// stored, so left at their defaults: the final state's orientation, angular velocity and
@@ -163,9 +174,12 @@ class ResultsDb {
     ResultsDb(sqlite3* db, std::filesystem::path path, bool writable);
     // open() and open_any(): with `any_kind` false, a soil flow is refused.
     static ResultsDb open_checked(const std::filesystem::path& path, bool writable, bool any_kind);
+    // The writer's pragmas (WAL) before the first write; see open().
+    void begin_writing();
     sqlite3* db_ = nullptr;
     std::filesystem::path path_;
     bool writable_ = false;
+    bool writing_ = false;
     // The insert statements, prepared on the first write_batch and reused by later ones.
     std::unique_ptr<Statements> statements_;
 };

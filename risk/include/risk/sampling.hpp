@@ -32,6 +32,11 @@ struct ReleaseZone {
     Distribution lateral = fixed(0.0);
 };
 
+/// The most samples one sweep plans: 10^8. A sweep keeps a list of the samples to run (8 bytes
+/// each, 0.8 GB here) and its database grows by about 0.5 kB a sample (50 GB here); 10^8
+/// samples take about 23 days on one core at 50 samples/s.
+inline constexpr std::int64_t max_samples = 100'000'000;
+
 /// What a sweep varies. Every input that a scenario file's [sweep] table leaves out is fixed
 /// at the base scenario's value for its first rock (see sweep_defaults).
 struct SweepSpec {
@@ -43,7 +48,8 @@ struct SweepSpec {
     Method method = Method::monte_carlo;
     /// Run seed (any 64-bit value).
     std::uint64_t seed = 1;
-    /// Planned number of samples (>= 1); Latin hypercube strata are 1 / samples wide.
+    /// Planned number of samples, in [1, max_samples]; Latin hypercube strata are 1 / samples
+    /// wide.
     std::int64_t samples = 1000;
     /// Shape families and their weights (same length, weights >= 0, one positive among these,
     /// entry_weights and generated_weight). Kind custom stands for base.rocks[0]'s custom
@@ -139,7 +145,8 @@ struct SweepProblem {
     std::string message;
 };
 
-/// Every problem of the spec against base: a base without rocks, samples < 1, kinds, entries,
+/// Every problem of the spec against base: a base without rocks, samples outside
+/// [1, max_samples], kinds, entries,
 /// generated rocks and their weights, a sphericity without generated rocks or the reverse, a
 /// sphericity support outside the targets' range, each distribution's parameters
 /// (find_problems), speeds below 0, zone names, weights and count, lateral_margin < 0, a

@@ -35,7 +35,7 @@ SampleResult run_sample(const SweepSpec& spec, const engine::Scenario& base, std
 
 /// Options of a SweepRunner.
 struct RunnerOptions {
-    /// Worker threads (>= 1).
+    /// Worker threads (>= 1); no more start than there are samples to run.
     int threads = 1;
     /// Interval between recorded trajectory samples, s (0: none).
     double trajectory_interval = 0.0;
@@ -46,8 +46,9 @@ struct RunnerOptions {
 /// changes its result (draw_sample is a pure function of the index).
 class SweepRunner {
   public:
-    /// Starts the workers on `pending` (indices to run, in the order to take them). The spec
-    /// and base must outlive the runner.
+    /// Starts min(options.threads, pending.size()) workers (at least one) on `pending` (indices
+    /// to run, in the order to take them). The spec and base must outlive the runner. Throws
+    /// std::runtime_error, saying how many threads did start, when the system refuses a thread.
     SweepRunner(const SweepSpec& spec, const engine::Scenario& base,
                 std::vector<std::int64_t> pending, const RunnerOptions& options);
     /// Stops the workers (after their current sample) and joins them.

@@ -5,6 +5,7 @@
 #include "shapes/polyhedron.hpp"
 
 #include <array>
+#include <cstddef>
 #include <filesystem>
 #include <iosfwd>
 #include <string>
@@ -12,6 +13,18 @@
 #include <vector>
 
 namespace rockfall::shapes {
+
+/// The most vertices a mesh file (a rock or a terrain) may hold: 200000, counted over every
+/// mesh in the file as placed by its nodes. Checked before any work on them: from a PLY file's
+/// header and a binary STL's triangle count before assimp reads the file, and from assimp's
+/// result before a hull or terrain is built. The convex hull of 200000 points all on it takes
+/// Qhull about 5 s.
+inline constexpr std::size_t max_mesh_vertices = 200'000;
+
+/// The most vertices the convex hull of a rock read from a mesh file may have: 2000. The
+/// engine's collision tests visit every hull vertex, so a simulated rock costs about 1 s of CPU
+/// at 1000 hull vertices (0.1 s at 70, 13 s at 10000; bench machine, seed slope).
+inline constexpr std::size_t max_hull_vertices = 2'000;
 
 /// How a mesh's coordinates become the rock: coordinates are multiplied by `scale`, then the
 /// hull is rescaled to `size` or `long_axis` when one of them is > 0 (not both).
@@ -41,8 +54,10 @@ bool is_mesh_file(const std::filesystem::path& file);
 
 /// Every vertex of every mesh in the file, in metres as written (node transforms applied).
 /// Throws GeometryError naming the file for a missing or unreadable file, an unknown format,
-/// a file assimp cannot parse, a file without vertices and a non-finite coordinate. assimp
-/// reads coordinates in single precision (Debian builds it with float ai_real).
+/// a file assimp cannot parse, a file without vertices, more than max_mesh_vertices vertices, a
+/// PLY header that breaks the format's rules (no `end_header`, an unknown line, counts the file
+/// cannot hold) and a non-finite coordinate. assimp reads coordinates in single precision
+/// (Debian builds it with float ai_real).
 std::vector<Vec3> read_mesh_vertices(const std::filesystem::path& file);
 
 /// Every vertex and every triangle of every mesh in the file (node transforms applied;
@@ -55,7 +70,8 @@ TriangleMesh read_mesh_triangles(const std::filesystem::path& file);
 
 /// The convex hull (Qhull) of a mesh file's vertices, scaled as `scaling` says. Throws
 /// GeometryError naming the file for every problem of read_mesh_vertices, a bad scaling,
-/// vertices that span no volume (collinear or coplanar), a mesh that lies further from the
+/// vertices that span no volume (collinear or coplanar), a hull of more than max_hull_vertices
+/// vertices, a mesh that lies further from the
 /// origin than 1000 times its own extent (single precision would blur its shape), and a rock
 /// whose volume-equivalent diameter ends outside [min_nominal_size, max_nominal_size] m.
 ConvexPolyhedron read_mesh_hull(const std::filesystem::path& file, const MeshScaling& scaling = {});
