@@ -12,6 +12,7 @@ btScalar CoulombSolver::solveSingleIteration(int iteration, btCollisionObject** 
         info, debug_drawer);
     release_unloaded(m_tmpSolverContactFrictionConstraintPool);
     release_unloaded(m_tmpSolverContactRollingFrictionConstraintPool);
+    bound_rolling_resistance();
     return residual;
 }
 
@@ -28,6 +29,24 @@ void CoulombSolver::release_unloaded(btConstraintArray& rows) {
             resolveSingleConstraintRowGeneric(m_tmpSolverBodyPool[row.m_solverBodyIdA],
                                               m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
         }
+    }
+}
+
+void CoulombSolver::bound_rolling_resistance() {
+    btConstraintArray& rows = m_tmpSolverContactRollingFrictionConstraintPool;
+    for (int i = 0; i < rows.size(); ++i) {
+        btSolverConstraint& row = rows[i];
+        const btScalar normal =
+            m_tmpSolverContactConstraintPool[row.m_frictionIndex].m_appliedImpulse;
+        if (normal <= 0.0) {
+            continue;
+        }
+        // The documented law: angular impulse up to mu_r r times the normal impulse
+        // (m_friction is the length mu_r r), with no cap at m_friction itself.
+        row.m_lowerLimit = -row.m_friction * normal;
+        row.m_upperLimit = row.m_friction * normal;
+        resolveSingleConstraintRowGeneric(m_tmpSolverBodyPool[row.m_solverBodyIdA],
+                                          m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
     }
 }
 

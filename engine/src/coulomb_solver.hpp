@@ -12,6 +12,13 @@ namespace rockfall::engine {
 // normal force. A block sliding on a 30 degree incline then accelerated 4 % (mu = 0.3) to 16 %
 // (mu = 0.5) below g (sin t - mu cos t). After each iteration this solver removes the friction
 // and rolling-friction impulses of points that carry no normal impulse.
+//
+// Bullet also caps each rolling-friction row at its coefficient (a length, mu_r r) times one
+// unit of impulse, whatever the normal impulse: at an impact, where the normal impulse is
+// tens of N s in one step, the rolling resistance all but vanished (a 0.2 m sphere kept 99.8 %
+// of its spin through a landing that the law mu_r r N slows by 7 rad/s). After Bullet's pass
+// this solver solves each rolling row again with the law's bound mu_r r times its point's
+// normal impulse.
 class CoulombSolver : public btSequentialImpulseConstraintSolver {
   protected:
     btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int body_count,
@@ -22,6 +29,7 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
 
   private:
     void release_unloaded(btConstraintArray& rows);
+    void bound_rolling_resistance();
 };
 
 }  // namespace rockfall::engine
