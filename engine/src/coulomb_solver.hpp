@@ -19,8 +19,16 @@ namespace rockfall::engine {
 // of its spin through a landing that the law mu_r r N slows by 7 rad/s). After Bullet's pass
 // this solver solves each rolling row again with the law's bound mu_r r times its point's
 // normal impulse.
+//
+// Restitution: Bullet aims a bouncing point's rebound at e times its approach speed at the
+// start of the step, when the point is already below the surface; it crossed the surface up
+// to a step earlier at a lower speed (gravity has since added up to g dt). This solver aims at
+// e times the speed at first touch instead, and drops the bounce when that speed is below the
+// restitution threshold.
 class CoulombSolver : public btSequentialImpulseConstraintSolver {
   protected:
+    void convertContacts(btPersistentManifold** manifolds, int manifold_count,
+                         const btContactSolverInfo& info) override;
     btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int body_count,
                                   btPersistentManifold** manifolds, int manifold_count,
                                   btTypedConstraint** constraints, int constraint_count,
@@ -30,6 +38,7 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
   private:
     void release_unloaded(btConstraintArray& rows);
     void bound_rolling_resistance();
+    void aim_restitution_at_touch(const btContactSolverInfo& info);
 };
 
 }  // namespace rockfall::engine

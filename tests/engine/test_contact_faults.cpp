@@ -1,5 +1,6 @@
 // Faults of the rigid-body contacts found while checking seed 000 (issue 16), each against an
-// analytic answer: rolling resistance through an impact.
+// analytic answer: rolling resistance through an impact, and the tail of small bounces of a
+// dropped sphere.
 
 #include "plane_scenario.hpp"
 
@@ -33,7 +34,8 @@ TEST_CASE("rolling resistance acts through an impact: the spin drops by mu_r r J
     scenario.numerics.max_time = 0.6;
     const std::vector<RockState> states = trajectory(scenario, 1e-6);
     std::size_t k = 1;
-    while (k < states.size() && !(states[k - 1].velocity.z() < 0.0 && states[k].velocity.z() > 0.0)) {
+    while (k < states.size() &&
+           !(states[k - 1].velocity.z() < 0.0 && states[k].velocity.z() > 0.0)) {
         ++k;
     }
     REQUIRE(k < states.size());
@@ -52,4 +54,49 @@ TEST_CASE("rolling resistance acts through an impact: the spin drops by mu_r r J
     // Spin about the contact normal and about x stays zero.
     CHECK_THAT(after.angular_velocity.x(), WithinAbs(0.0, 1e-9));
     CHECK_THAT(after.angular_velocity.z(), WithinAbs(0.0, 1e-9));
+}
+
+namespace {
+
+// Time at which a sphere dropped from h comes to rest under the engine's contact model: it
+// lands at v0 = sqrt(2 g h) and rebounds at e v while the impact speed v is at least the
+// restitution threshold, each flight lasting 2 e v / g.
+double modelled_rest_time(double h, double e, double threshold) {
+    double v = std::sqrt(2.0 * kGravity * h);
+    double t = v / kGravity;
+    while (v >= threshold) {
+        t += 2.0 * e * v / kGravity;
+        v *= e;
+    }
+    return t;
+}
+
+}  // namespace
+
+TEST_CASE("a dropped sphere comes to rest when the bouncing model says",
+          "[verification][contact]") {
+    const double e = GENERATE(0.3, 0.5, 0.8);
+    const double h = 1.0;
+    engine::Scenario scenario = plane_scenario(0.0, shapes::RockKind::sphere, {0.5, e, 0.0}, 1e-3);
+    scenario.rocks.front().release.height = h;
+    scenario.numerics.max_time = 6.0;
+    const std::vector<RockState> states = trajectory(scenario, 1e-6);
+    // The last landing: the end of the last step that stopped a downward motion faster than
+    // the 1.5 g dt of a resting sphere that lost contact for one step.
+    const double resting = 1.5 * kGravity * scenario.numerics.time_step;
+    double landing = 0.0;
+    for (std::size_t k = 1; k < states.size(); ++k) {
+        if (states[k - 1].velocity.z() < -resting && states[k].velocity.z() >= -1e-6) {
+            landing = states[k].time;
+        }
+    }
+    const double expected = modelled_rest_time(h, e, scenario.numerics.restitution_threshold);
+    const double analytic = std::sqrt(2.0 * h / kGravity) * (1.0 + e) / (1.0 - e);
+    INFO("e = " << e << ": comes to rest at " << landing << " s, model " << expected
+                << " s, untruncated " << analytic << " s");
+    // Before the first-touch restitution the sphere came to rest 0.79 %, 0.93 % and 2.77 % late
+    // (e = 0.3, 0.5, 0.8). What remains is about one step of detection lag per bounce (the
+    // point is found below the surface and leaves from there): 4.6 ms over four bounces at
+    // e = 0.3, which is why that case is held to 0.6 % instead of 0.5 %.
+    CHECK_THAT(landing, WithinRel(expected, e < 0.4 ? 0.006 : 0.005));
 }
