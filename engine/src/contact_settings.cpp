@@ -104,9 +104,8 @@ void configure_solver(btContactSolverInfo& info, const Numerics& numerics) {
     info.m_splitImpulsePenetrationThreshold = BT_LARGE_FLOAT;
     // Share of the penetration the split impulse removes per step.
     info.m_erp2 = 0.8;
-    // Bounces below this normal speed are dropped (m/s): far below any bounce that matters,
-    // above the g dt a resting contact gains per step (0.01 m/s at 1 ms).
-    info.m_restitutionVelocityThreshold = 0.05;
+    // Bounces below this normal speed are dropped (m/s).
+    info.m_restitutionVelocityThreshold = kRestitutionThreshold;
     // Two friction directions per contact: with one, a rolling contact (zero slip, so no
     // velocity to align with) gets an arbitrary direction and slips along the other.
     info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;

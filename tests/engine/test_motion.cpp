@@ -2,6 +2,8 @@
 // of it: free fall, a block sliding on an incline, a sphere rolling without slip, and the
 // drop-bounce that calibrates restitution (issue 2, "Contact calibration").
 
+#include "plane_scenario.hpp"
+
 #include "engine/simulation.hpp"
 
 #include <catch2/catch.hpp>
@@ -18,40 +20,11 @@ using engine::Vec3;
 
 namespace {
 
-constexpr double kGravity = 9.81;
-
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
-// One straight segment at `angle_deg`, 40 m long, without bars, side walls or reaction wall;
-// rock and surface share `material` (so the mean rule gives it unchanged).
-engine::Scenario plane_scenario(double angle_deg, shapes::RockKind kind,
-                                const engine::Material& material, double time_step) {
-    engine::Scenario scenario;
-    scenario.slope.segments = {{40.0, angle_deg}};
-    scenario.slope.bars.enabled = false;
-    scenario.slope.side_walls.enabled = false;
-    scenario.slope.wall.enabled = false;
-    scenario.materials.slope = material;
-    scenario.rocks.front().rock.kind = kind;
-    scenario.rocks.front().rock.size = 0.2;
-    scenario.rocks.front().rock.material = material;
-    scenario.rocks.front().release.distance = 5.0;
-    scenario.stations = {};
-    scenario.numerics.time_step = time_step;
-    scenario.gravity = kGravity;
-    return scenario;
-}
-
-// Every state the engine reports, sampled every `interval` seconds (every step when smaller
-// than the step).
-std::vector<RockState> trajectory(const engine::Scenario& scenario, double interval) {
-    std::vector<RockState> states;
-    engine::RunOptions options;
-    options.trajectory_interval = interval;
-    options.trajectory = [&](int, const RockState& state) { states.push_back(state); };
-    engine::simulate(scenario, 1, options);
-    return states;
-}
+using engine::test::downslope;
+using engine::test::kGravity;
+using engine::test::plane_scenario;
+using engine::test::radians;
+using engine::test::trajectory;
 
 // The sampled state closest to time t.
 const RockState& at_time(const std::vector<RockState>& states, double t) {
@@ -70,10 +43,6 @@ double acceleration(const std::vector<RockState>& states, const Vec3& direction,
     const RockState& a = at_time(states, t0);
     const RockState& b = at_time(states, t1);
     return (b.velocity - a.velocity).dot(direction) / (b.time - a.time);
-}
-
-Vec3 downslope(double angle_deg) {
-    return {std::cos(radians(angle_deg)), 0.0, -std::sin(radians(angle_deg))};
 }
 
 Vec3 upward_normal(double angle_deg) {

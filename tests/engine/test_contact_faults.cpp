@@ -1,0 +1,105 @@
+// Faults of the rigid-body contacts found while checking seed 000 (issue 16), each against an
+// analytic answer: rolling resistance through an impact, and the tail of small bounces of a
+// dropped sphere.
+
+#include "plane_scenario.hpp"
+
+#include "engine/simulation.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+using namespace rockfall;
+using engine::RockState;
+using engine::Vec3;
+using engine::test::kGravity;
+using engine::test::plane_scenario;
+using engine::test::trajectory;
+
+TEST_CASE("rolling resistance acts through an impact: the spin drops by mu_r r J / I",
+          "[verification][contact]") {
+    const double dt = GENERATE(1e-3, 5e-4);
+    const double e = GENERATE(0.3, 0.8);
+    const double rolling = 0.05;
+    // No friction: the landing changes the spin only through the rolling-resistance torque.
+    engine::Scenario scenario =
+        plane_scenario(0.0, shapes::RockKind::sphere, {0.0, e, rolling}, dt);
+    const double spin = 50.0;  // rad/s about the horizontal y axis
+    scenario.rocks.front().release.height = 1.0;
+    scenario.rocks.front().release.spin = Vec3(0.0, spin, 0.0);
+    scenario.numerics.max_time = 0.6;
+    const std::vector<RockState> states = trajectory(scenario, 1e-6);
+    std::size_t k = 1;
+    while (k < states.size() &&
+           !(states[k - 1].velocity.z() < 0.0 && states[k].velocity.z() > 0.0)) {
+        ++k;
+    }
+    REQUIRE(k < states.size());
+    const RockState& before = states[k - 1];
+    const RockState& after = states[k];
+    const double r = 0.1;
+    // The normal impulse per unit mass of the landing step (gravity's share dt g added back),
+    // and the documented law's angular impulse mu_r r J about the spin axis: with I = 2/5 m r^2
+    // the spin falls by mu_r J / (0.4 m r).
+    const double impulse_per_mass = after.velocity.z() - before.velocity.z() + kGravity * dt;
+    const double expected = rolling * impulse_per_mass / (0.4 * r);
+    const double measured = before.angular_velocity.y() - after.angular_velocity.y();
+    INFO("dt = " << dt << " s, e = " << e << ": spin " << before.angular_velocity.y() << " -> "
+                 << after.angular_velocity.y() << " rad/s, expected drop " << expected);
+    CHECK_THAT(measured, WithinRel(expected, 0.02));
+    // Spin about the contact normal and about x stays zero.
+    CHECK_THAT(after.angular_velocity.x(), WithinAbs(0.0, 1e-9));
+    CHECK_THAT(after.angular_velocity.z(), WithinAbs(0.0, 1e-9));
+}
+
+namespace {
+
+// The engine's restitution threshold, m/s (engine/src/contact_settings.hpp, docs/scenarios.md).
+constexpr double kRestitutionThreshold = 0.05;
+
+// Time at which a sphere dropped from h comes to rest under the engine's contact model: it
+// lands at v0 = sqrt(2 g h) and rebounds at e v while the impact speed v is at least the
+// restitution threshold, each flight lasting 2 e v / g.
+double modelled_rest_time(double h, double e, double threshold) {
+    double v = std::sqrt(2.0 * kGravity * h);
+    double t = v / kGravity;
+    while (v >= threshold) {
+        t += 2.0 * e * v / kGravity;
+        v *= e;
+    }
+    return t;
+}
+
+}  // namespace
+
+TEST_CASE("a dropped sphere comes to rest when the bouncing model says",
+          "[verification][contact]") {
+    const double e = GENERATE(0.3, 0.5, 0.8);
+    const double h = 1.0;
+    engine::Scenario scenario = plane_scenario(0.0, shapes::RockKind::sphere, {0.5, e, 0.0}, 1e-3);
+    scenario.rocks.front().release.height = h;
+    scenario.numerics.max_time = 6.0;
+    const std::vector<RockState> states = trajectory(scenario, 1e-6);
+    // The last landing: the end of the last step that stopped a downward motion faster than
+    // the 1.5 g dt of a resting sphere that lost contact for one step.
+    const double resting = 1.5 * kGravity * scenario.numerics.time_step;
+    double landing = 0.0;
+    for (std::size_t k = 1; k < states.size(); ++k) {
+        if (states[k - 1].velocity.z() < -resting && states[k].velocity.z() >= -1e-6) {
+            landing = states[k].time;
+        }
+    }
+    const double expected = modelled_rest_time(h, e, kRestitutionThreshold);
+    const double analytic = std::sqrt(2.0 * h / kGravity) * (1.0 + e) / (1.0 - e);
+    INFO("e = " << e << ": comes to rest at " << landing << " s, model " << expected
+                << " s, untruncated " << analytic << " s");
+    // Before the first-touch restitution the sphere came to rest 0.79 %, 0.93 % and 2.77 % late
+    // (e = 0.3, 0.5, 0.8). What remains is about one step of detection lag per bounce (the
+    // point is found below the surface and leaves from there): 4.6 ms over four bounces at
+    // e = 0.3, which is why that case is held to 0.6 % instead of 0.5 %.
+    CHECK_THAT(landing, WithinRel(expected, e < 0.4 ? 0.006 : 0.005));
+}
