@@ -19,10 +19,10 @@ namespace {
 
 void print_estimate(const char* name, const char* unit, const RichardsonEstimate& e) {
     if (e.monotone) {
-        std::printf("  %-18s extrapolated %10.4g %-4s observed order %5.2f, finest change %5.1f %%, "
-                    "GCI %5.1f %%\n",
-                    name, e.extrapolated, unit, e.order, 100.0 * e.finest_change,
-                    100.0 * e.gci_fine);
+        std::printf(
+            "  %-18s extrapolated %10.4g %-4s observed order %5.2f, finest change %5.1f %%, "
+            "GCI %5.1f %%\n",
+            name, e.extrapolated, unit, e.order, 100.0 * e.finest_change, 100.0 * e.gci_fine);
     } else {
         std::printf("  %-18s not monotone: no extrapolation; finest change %5.1f %%\n", name,
                     100.0 * e.finest_change);
@@ -56,9 +56,8 @@ int main(int argc, char** argv) {
             rusage usage{};
             getrusage(RUSAGE_SELF, &usage);
             std::printf("%8.4f %9ld %8ld %12.1f %9.3f %12.1f %10.3f %9.1f %9.1f%s\n", l.cell_size,
-                        l.particles, l.steps, l.peak_wall_force, l.peak_time,
-                        l.steady_wall_force, l.runout_past_toe,
-                        std::chrono::duration<double>(now - start).count(),
+                        l.particles, l.steps, l.peak_wall_force, l.peak_time, l.steady_wall_force,
+                        l.runout_past_toe, std::chrono::duration<double>(now - start).count(),
                         static_cast<double>(usage.ru_maxrss) / 1024.0,
                         l.status == SoilStatus::completed ? "" : " (not completed)");
             std::fflush(stdout);

@@ -52,8 +52,8 @@ RichardsonEstimate richardson(double coarse, double medium, double fine, double 
     e.order = std::log(q) / std::log(ratio);
     const double denominator = std::pow(ratio, e.order) - 1.0;
     e.extrapolated = fine + (fine - medium) / denominator;
-    e.gci_fine = fine != 0.0 ? 1.25 * std::abs(fine - medium) / (std::abs(fine) * denominator)
-                             : kNaN;
+    e.gci_fine =
+        fine != 0.0 ? 1.25 * std::abs(fine - medium) / (std::abs(fine) * denominator) : kNaN;
     return e;
 }
 
@@ -90,7 +90,8 @@ RefinementStudy run_refinement(const SoilScenario& scenario, const RefinementSet
                                     std::to_string(cells.size()));
     }
     for (std::size_t i = 0; i < cells.size(); ++i) {
-        const bool ok = std::isfinite(cells[i]) && cells[i] > 0.0 && (i == 0 || cells[i] < cells[i - 1]);
+        const bool ok =
+            std::isfinite(cells[i]) && cells[i] > 0.0 && (i == 0 || cells[i] < cells[i - 1]);
         if (!ok) {
             std::ostringstream message;
             message << "refine.cell_sizes[" << i << "] = " << cells[i]
@@ -108,8 +109,7 @@ RefinementStudy run_refinement(const SoilScenario& scenario, const RefinementSet
     for (std::size_t i = 0; i < cells.size(); ++i) {
         SoilScenario level = scenario;
         level.numerics.cell_size = cells[i];
-        study.levels.push_back(
-            refinement_level(run_soil(level), cells[i], settings.steady_window));
+        study.levels.push_back(refinement_level(run_soil(level), cells[i], settings.steady_window));
         if (progress) {
             progress(static_cast<int>(i), study.levels.back());
         }

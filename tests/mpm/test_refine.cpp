@@ -27,8 +27,7 @@ TEST_CASE("Richardson extrapolation recovers the limit and order of f = f0 + C h
     CHECK_THAT(e.gci_fine, WithinRel(1.25 * std::abs(f3 - 7.0) / f3, 1e-9));
 }
 
-TEST_CASE("Richardson extrapolation refuses oscillating or diverging sequences",
-          "[mpm][refine]") {
+TEST_CASE("Richardson extrapolation refuses oscillating or diverging sequences", "[mpm][refine]") {
     const RichardsonEstimate oscillating = richardson(1.0, 2.0, 1.5, 2.0);
     CHECK_FALSE(oscillating.monotone);
     CHECK(std::isnan(oscillating.extrapolated));
