@@ -44,19 +44,19 @@ Bounds bounds_of(const shapes::OrientedBox& box) {
 
 template <int Dim>
 NodeRule<Dim> classify_node(const Vec3& x, const std::vector<StaticBoundary>& statics,
-                            const std::vector<Bounds>& bounds) {
+                            const std::vector<Bounds>& bounds, double reach) {
     assert(statics.size() == bounds.size());
     std::array<double, kBoundaryGroups> depth;
     depth.fill(0.0);
     std::array<NodeConstraint<Dim>, kBoundaryGroups> best{};
     for (std::size_t i = 0; i < statics.size(); ++i) {
-        if (!bounds[i].contains(x, 1e-12)) {
+        if (!bounds[i].contains(x, reach + 1e-12)) {
             continue;
         }
         Vec3 normal;
         const double distance = shapes::signed_distance(statics[i].box, x, &normal);
         const int group = statics[i].group;
-        if (distance > 0.0 || (best[group].boundary >= 0 && distance >= depth[group])) {
+        if (distance > reach || (best[group].boundary >= 0 && distance >= depth[group])) {
             continue;
         }
         Vec<Dim> n = from_scene<Dim>(normal);
@@ -78,9 +78,9 @@ NodeRule<Dim> classify_node(const Vec3& x, const std::vector<StaticBoundary>& st
 }
 
 template NodeRule<2> classify_node<2>(const Vec3&, const std::vector<StaticBoundary>&,
-                                      const std::vector<Bounds>&);
+                                      const std::vector<Bounds>&, double);
 template NodeRule<3> classify_node<3>(const Vec3&, const std::vector<StaticBoundary>&,
-                                      const std::vector<Bounds>&);
+                                      const std::vector<Bounds>&, double);
 
 }  // namespace detail
 }  // namespace rockfall::mpm

@@ -5,8 +5,9 @@
 namespace rockfall::mpm::detail {
 
 template <int Dim>
-BlockGrid<Dim>::BlockGrid(const Vec<Dim>& domain_min, double cell, const IVec<Dim>& node_count)
-    : origin(domain_min), h(cell), nodes(node_count) {
+BlockGrid<Dim>::BlockGrid(const Vec<Dim>& domain_min, double cell, const IVec<Dim>& node_count,
+                          double reach)
+    : origin(domain_min), h(cell), nodes(node_count), boundary_reach(reach) {
     long total = 1;
     for (int d = 0; d < Dim; ++d) {
         blocks[d] = (nodes[d] + kBlockEdge - 1) / kBlockEdge + 1;
@@ -42,7 +43,7 @@ int BlockGrid<Dim>::ensure_slot(int id, const std::vector<StaticBoundary>& stati
             r /= kBlockEdge;
         }
         const NodeRule<Dim> rule =
-            classify_node<Dim>(to_scene<Dim>(node_position(node)), statics, bounds);
+            classify_node<Dim>(to_scene<Dim>(node_position(node)), statics, bounds, boundary_reach);
         if (rule.count > 0) {
             rule_of_node[first + static_cast<std::size_t>(local)] =
                 static_cast<std::int32_t>(rules.size());

@@ -59,10 +59,10 @@ struct Bounds {
 Bounds bounds_of(const shapes::OrientedBox& box);
 
 // The rule of a node at scene position x: per group the solid it is deepest in (signed
-// distance <= 0). Returns count 0 when the node is in no solid.
+// distance <= reach, m). Returns count 0 when the node is in no solid.
 template <int Dim>
 NodeRule<Dim> classify_node(const Vec3& x, const std::vector<StaticBoundary>& statics,
-                            const std::vector<Bounds>& bounds);
+                            const std::vector<Bounds>& bounds, double reach);
 
 // Coulomb friction in velocity form relative to a solid moving at v_solid (see boundary.hpp).
 template <int Dim>
@@ -101,8 +101,10 @@ struct BlockGrid {
     std::vector<Node<Dim>> data;
     std::vector<std::int32_t> rule_of_node;
     std::vector<NodeRule<Dim>> rules;
+    // Signed distance up to which a node counts as inside a solid, m (SolverSettings).
+    double boundary_reach = 0.0;
 
-    BlockGrid(const Vec<Dim>& domain_min, double cell, const IVec<Dim>& node_count);
+    BlockGrid(const Vec<Dim>& domain_min, double cell, const IVec<Dim>& node_count, double reach);
 
     int block_count() const { return static_cast<int>(slot_of_block.size()); }
     int block_id(const IVec<Dim>& b) const {

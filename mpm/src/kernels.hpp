@@ -362,12 +362,13 @@ inline void apply_domain_faces(const IVec<Dim>& index, const IVec<Dim>& nodes, V
 }
 
 // A hinged body on a node at scene position x: the deepest of its boxes acts, moving with the
-// body's rotation about the hinge (axis +y). Returns whether the node is inside the body.
+// body's rotation about the hinge (axis +y). A node counts as inside within `reach` m of a
+// box (as for static solids). Returns whether the node is inside the body.
 template <int Dim>
 inline bool apply_hinged(const std::vector<shapes::OrientedBox>& boxes, const Bounds& bounds,
                          const Vec3& hinge, double angular_velocity, BoundaryKind kind,
-                         double friction_coefficient, const Vec3& x, Vec<Dim>& v) {
-    if (!bounds.contains(x, 1e-12)) {
+                         double friction_coefficient, double reach, const Vec3& x, Vec<Dim>& v) {
+    if (!bounds.contains(x, reach + 1e-12)) {
         return false;
     }
     double depth = 0.0;
@@ -376,7 +377,7 @@ inline bool apply_hinged(const std::vector<shapes::OrientedBox>& boxes, const Bo
     for (const auto& box : boxes) {
         Vec3 n;
         const double distance = shapes::signed_distance(box, x, &n);
-        if (distance <= 0.0 && (!inside || distance < depth)) {
+        if (distance <= reach && (!inside || distance < depth)) {
             Vec<Dim> in_plane = from_scene<Dim>(n);
             if (in_plane.norm() < 1e-6) {
                 continue;

@@ -254,6 +254,16 @@ SoilModel<Dim> build_soil_model(const SoilScenario& scenario) {
     SolverSettings settings;
     settings.cell_size = h;
     settings.domain_min = lo - Vec3::Constant(3.0 * h);
+    if (scenario.numerics.align_grid) {
+        // Node planes on the wall's face and the run-out surface: move the first node down
+        // (by less than a cell) to the lattice through that point.
+        const double anchor_x = slope.wall() ? slope.wall_x() : slope.toe_x();
+        const double anchor_z = slope.surface_height(slope.toe_x());
+        settings.domain_min.x() =
+            anchor_x - std::ceil((anchor_x - settings.domain_min.x()) / h) * h;
+        settings.domain_min.z() =
+            anchor_z - std::ceil((anchor_z - settings.domain_min.z()) / h) * h;
+    }
     settings.domain_max = hi + Vec3::Constant(3.0 * h);
     settings.cfl = scenario.numerics.cfl;
     settings.threads = scenario.numerics.threads;

@@ -46,6 +46,8 @@ Solver<Dim>::Solver(const SolverSettings& settings, const Material& material,
       work_(std::make_unique<Workspace>()) {
     const SolverSettings& s = settings_;
     require(std::isfinite(s.cell_size) && s.cell_size > 0.0, "cell_size", s.cell_size, "m", "> 0");
+    require(s.boundary_reach >= 0.0 && s.boundary_reach <= 0.5, "boundary_reach", s.boundary_reach,
+            "", "in [0, 0.5]");
     require(s.cfl > 0.0 && s.cfl <= 1.0, "cfl", s.cfl, "", "in (0, 1]");
     require(s.max_time_step > 0.0, "max_time_step", s.max_time_step, "s", "> 0");
     require(s.damping >= 0.0, "damping", s.damping, "1/s", ">= 0");
@@ -62,7 +64,10 @@ Solver<Dim>::Solver(const SolverSettings& settings, const Material& material,
                 ">= 4 cell sizes on every axis");
         nodes[d] = static_cast<int>(std::ceil(extent / s.cell_size - 1e-9)) + 1;
     }
-    grid_ = std::make_unique<Grid>(lo, s.cell_size, nodes);
+    // A node on a surface up to round-off (1e-6 h) counts as on it: node positions lo + k h and
+    // a wall at the same place computed another way differ in the last bits.
+    grid_ = std::make_unique<Grid>(lo, s.cell_size, nodes,
+                                   std::max(s.boundary_reach, 1e-6) * s.cell_size);
     int particle_block_count = 1;
     for (int d = 0; d < Dim; ++d) {
         work_->particle_blocks[d] = (nodes[d] + kParticleBlockEdge - 1) / kParticleBlockEdge;
@@ -239,7 +244,7 @@ void Solver<Dim>::update_grid(double dt) {
                     if (detail::apply_hinged<Dim>(w.bodies[b].boxes, w.bodies[b].bounds,
                                                   w.bodies[b].hinge, w.bodies[b].angular_velocity,
                                                   hinged_[b].kind, hinged_[b].friction_coefficient,
-                                                  x, v)) {
+                                                  grid.boundary_reach, x, v)) {
                         impulse[static_cast<std::size_t>(hinged_[b].group)] +=
                             to_scene<Dim>(m * (before - v));
                     }

@@ -64,6 +64,13 @@ struct SoilNumerics {
     int particles_per_cell = 3;
     /// Courant number, (0, 1].
     double cfl = 0.3;
+    /// Grid placement. true (default): node planes lie on the reaction wall's front face
+    /// (x = wall_x) and on the run-out surface (z of the toe), whatever the cell size, so those
+    /// two boundaries act exactly at their surface; without a wall, on the toe's x. false: the
+    /// grid's first node is 3 cells below and behind the bed and slope (the placement before
+    /// this field), and a boundary between node planes acts at the node layer nearest its
+    /// surface, within h/2 of it (SolverSettings::boundary_reach).
+    bool align_grid = true;
     /// Worker threads (>= 0; 0 = all available).
     int threads = 0;
 };

@@ -41,13 +41,23 @@ namespace rockfall::mpm {
 struct SolverSettings {
     /// Grid cell size h, m (> 0).
     double cell_size = 0.2;
-    /// Lower corner of the grid domain (scene frame; 2D ignores y), m.
+    /// Lower corner of the grid domain (scene frame; 2D ignores y), m; it is a grid node, so the
+    /// node planes lie at domain_min + k cell_size: this places the grid.
     Vec3 domain_min = Vec3::Zero();
     /// Upper corner of the grid domain (scene frame; 2D ignores y), m; at least 4 cells
     /// beyond domain_min on every axis.
     Vec3 domain_max = Vec3::Ones();
     /// Gravity (scene frame; 2D uses x and z), m/s2.
     Vec3 gravity = Vec3(0.0, 0.0, -9.81);
+    /// How far outside a solid a grid node may lie and still be constrained by it, as a fraction
+    /// of cell_size, [0, 0.5]. 0 (default): only nodes on or inside the solid, so a surface
+    /// between node planes acts up to one cell behind its true place and the soil in front of
+    /// it is compliant (place node planes on walls through domain_min, which is a node). 0.5:
+    /// the node layer nearest the surface, within h/2 of its true place on either side (the
+    /// at-rest thrust against a wall between node planes: 45 % of K0 gamma H^2 / 2 with 0,
+    /// 89 % with 0.5, tests/mpm/test_column_at_rest.cpp). Both agree when a node plane lies on
+    /// the surface.
+    double boundary_reach = 0.0;
     /// Courant number of stable_time_step(), (0, 1].
     double cfl = 0.3;
     /// Upper bound of stable_time_step(), s (> 0).

@@ -1,0 +1,71 @@
+// Richardson extrapolation on sequences with a known limit and order, and the refinement
+// study's input checks.
+#include "mpm/refine.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+using namespace rockfall::mpm;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+TEST_CASE("Richardson extrapolation recovers the limit and order of f = f0 + C h^p",
+          "[mpm][refine]") {
+    const double p = GENERATE(1.0, 1.5, 2.0);
+    const double ratio = GENERATE(2.0, 1.5);
+    auto f = [&](double h) { return 7.0 - 3.0 * std::pow(h, p); };
+    const double h = 0.2;
+    const RichardsonEstimate e = richardson(f(h), f(h / ratio), f(h / (ratio * ratio)), ratio);
+    REQUIRE(e.monotone);
+    CHECK_THAT(e.order, WithinRel(p, 1e-9));
+    CHECK_THAT(e.extrapolated, WithinRel(7.0, 1e-9));
+    const double f3 = f(h / (ratio * ratio));
+    CHECK_THAT(e.finest_change, WithinRel(std::abs(f3 - f(h / ratio)) / f3, 1e-12));
+    // GCI = 1.25 |f3 - f2| / (|f3| (r^p - 1)) = 1.25 |f3 - f0| / |f3|.
+    CHECK_THAT(e.gci_fine, WithinRel(1.25 * std::abs(f3 - 7.0) / f3, 1e-9));
+}
+
+TEST_CASE("Richardson extrapolation refuses oscillating or diverging sequences", "[mpm][refine]") {
+    const RichardsonEstimate oscillating = richardson(1.0, 2.0, 1.5, 2.0);
+    CHECK_FALSE(oscillating.monotone);
+    CHECK(std::isnan(oscillating.extrapolated));
+    CHECK(std::isnan(oscillating.order));
+    const RichardsonEstimate diverging = richardson(1.0, 1.1, 1.3, 2.0);
+    CHECK_FALSE(diverging.monotone);
+    CHECK_THAT(diverging.finest_change, WithinRel(0.2 / 1.3, 1e-12));
+    const RichardsonEstimate exact = richardson(1.0, 2.0, 2.0, 2.0);
+    CHECK(exact.monotone);
+    CHECK(exact.extrapolated == 2.0);
+    CHECK_THROWS_AS(richardson(1.0, 2.0, 3.0, 1.0), std::invalid_argument);
+}
+
+TEST_CASE("Refinement study checks its cell sizes and window", "[mpm][refine]") {
+    SoilScenario s;
+    s.numerics.dimension = 2;
+    RefinementSettings settings;
+    settings.cell_sizes = {0.2, 0.2, 0.1};
+    CHECK_THROWS_WITH(run_refinement(s, settings),
+                      Catch::Contains("refine.cell_sizes[1] = 0.2 m: must be > 0 and smaller"));
+    settings.cell_sizes = {0.2};
+    CHECK_THROWS_WITH(run_refinement(s, settings), Catch::Contains("at least 2"));
+    settings.cell_sizes = {0.4, 0.2};
+    settings.steady_window = 20.0;
+    CHECK_THROWS_WITH(run_refinement(s, settings), Catch::Contains("refine.steady_window = 20 s"));
+}
+
+TEST_CASE("Refinement level: steady load is the mean over the last window", "[mpm][refine]") {
+    SoilOutcome o;
+    o.particles = 10;
+    o.peak_wall_force = 5.0;
+    o.peak_wall_force_time = 0.2;
+    for (int k = 1; k <= 10; ++k) {
+        o.sample_time.push_back(0.1 * k);
+        o.wall_force.push_back(k <= 6 ? 5.0 : 2.0);
+    }
+    const RefinementLevel level = refinement_level(o, 0.1, 0.4);
+    CHECK_THAT(level.steady_wall_force, WithinRel(2.0, 1e-12));
+    CHECK(level.peak_wall_force == 5.0);
+    CHECK(level.peak_time == 0.2);
+}
