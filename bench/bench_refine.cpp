@@ -4,7 +4,8 @@
 // for `rockfall soil --refine` until that command is wired; it is not a timed test.
 //
 // Usage: bench_refine SCENARIO.toml [threads] CELL_SIZE_m CELL_SIZE_m ...  (coarsest first)
-#include "app/soil_file.hpp"
+#include "scenario/soil_file.hpp"
+
 #include "mpm/refine.hpp"
 
 #include <chrono>
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: bench_refine SCENARIO.toml THREADS CELL_SIZE_m ...\n");
         return 2;
     }
-    SoilScenario scenario = rockfall::app::load_soil_scenario(argv[1]).scenario;
+    SoilScenario scenario = rockfall::scenario::load_soil_scenario(argv[1]).scenario;
     scenario.numerics.threads = std::atoi(argv[2]);
     RefinementSettings settings;
     settings.cell_sizes.clear();
