@@ -11,6 +11,7 @@
 #include <exception>
 #include <iostream>
 #include <stdexcept>
+#include <string>
 
 int main(int argc, char** argv) {
     CLI::App app{
@@ -28,6 +29,22 @@ int main(int argc, char** argv) {
     rockfall::app::register_shape(app);
     rockfall::app::register_terrain(app);
     rockfall::app::register_query(app);
+    // CLI11 reads an unknown first word as a stray positional and answers "A subcommand is
+    // required"; name what was typed and list the commands instead.
+    if (argc > 1 && argv[1][0] != '-') {
+        const std::string typed = argv[1];
+        std::string names;
+        bool known = false;
+        for (const CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+            known = known || command->get_name() == typed;
+            names += (names.empty() ? "" : ", ") + command->get_name();
+        }
+        if (!known) {
+            std::cerr << "rockfall: unknown command '" << typed << "'; the commands are " << names
+                      << " (rockfall COMMAND --help for each)\n";
+            return rockfall::app::exit_bad_input;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& e) {
