@@ -35,10 +35,6 @@ struct TerrainArgs {
     std::optional<std::uint64_t> seed;
 };
 
-std::string fmt(double value) { return report::fmt("%.6g", value); }
-
-std::string triple(const shapes::Vec3& v) { return fmt(v[0]) + " " + fmt(v[1]) + " " + fmt(v[2]); }
-
 // Heights of the mesh's vertices above the reference profile, inside the slope's footprint.
 struct Deviation {
     double max = 0.0;
@@ -85,10 +81,10 @@ void describe(const scenario::ScenarioFile& file, const shapes::Terrain& terrain
     if (terrain.dropped_triangles() > 0) {
         std::cout << " (" << terrain.dropped_triangles() << " degenerate triangles dropped)";
     }
-    std::cout << "\nbounding box: " << triple(terrain.lower()) << " to " << triple(terrain.upper())
-              << " m\nheight above the reference profile, " << d.vertices
-              << " vertices over the footprint: largest |dz| " << fmt(d.max) << " m, rms "
-              << fmt(d.rms) << " m\n";
+    std::cout << "\nbounding box: " << report::triple(terrain.lower()) << " to "
+              << report::triple(terrain.upper()) << " m\nheight above the reference profile, "
+              << d.vertices << " vertices over the footprint: largest |dz| "
+              << report::short_number(d.max) << " m, rms " << report::short_number(d.rms) << " m\n";
 }
 
 bool generation_options(const TerrainArgs& args) {
@@ -114,9 +110,10 @@ void run(const TerrainArgs& args) {
         grid.seed = args.seed.value_or(grid.seed);
         generated = shapes::profile_terrain(file.scenario.slope, grid);
         comment = "rockfall terrain: the reference profile of " + file.path.filename().string() +
-                  "\nspacing " + fmt(grid.spacing) + " m, margin " + fmt(grid.margin) +
-                  " m, relief rms " + fmt(grid.roughness) + " m, shortest wavelength " +
-                  fmt(grid.wavelength) + " m, seed " + std::to_string(grid.seed) +
+                  "\nspacing " + report::short_number(grid.spacing) + " m, margin " +
+                  report::short_number(grid.margin) + " m, relief rms " +
+                  report::short_number(grid.roughness) + " m, shortest wavelength " +
+                  report::short_number(grid.wavelength) + " m, seed " + std::to_string(grid.seed) +
                   "\nslope frame (m): x downslope from the crown, y across, z up";
     } else {
         comment = "rockfall terrain: " + terrain->name() + " of " + file.path.filename().string() +

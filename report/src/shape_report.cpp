@@ -7,13 +7,6 @@
 #include <algorithm>
 
 namespace rockfall::report {
-namespace {
-
-std::string num(double value) { return fmt("%.6g", value); }
-
-std::string triple(const shapes::Vec3& v) { return num(v[0]) + " " + num(v[1]) + " " + num(v[2]); }
-
-}  // namespace
 
 void print_shape_text(std::ostream& out, const ShapeView& shape, const shapes::ShapeMeasures& m) {
     const shapes::MassProperties& p = m.properties;
@@ -21,20 +14,22 @@ void print_shape_text(std::ostream& out, const ShapeView& shape, const shapes::S
     constexpr double density = kShapeReportDensity;
     out << "shape: " << shape.label << " (" << shape.source << ")\n"
         << "kind: " << shapes::to_string(rock.kind) << '\n'
-        << "volume-equivalent diameter: " << num(m.equivalent_diameter) << " m\n"
-        << "volume: " << num(p.volume) << " m3\n"
-        << "surface area: " << num(p.surface_area) << " m2\n"
+        << "volume-equivalent diameter: " << short_number(m.equivalent_diameter) << " m\n"
+        << "volume: " << short_number(p.volume) << " m3\n"
+        << "surface area: " << short_number(p.surface_area) << " m2\n"
         << "centre of mass (body frame): " << triple(p.centroid) << " m\n"
         << "principal moments per unit density: " << triple(p.principal_moments) << " m5\n"
-        << "principal moments at density " << num(density)
+        << "principal moments at density " << short_number(density)
         << " kg/m3: " << triple(density * p.principal_moments) << " kg m2\n"
-        << "mass at density " << num(density) << " kg/m3: " << num(density * p.volume) << " kg\n"
+        << "mass at density " << short_number(density)
+        << " kg/m3: " << short_number(density * p.volume) << " kg\n"
         << "axis lengths a b c: " << triple(m.axis_lengths) << " m\n"
-        << "elongation b/a: " << num(m.elongation) << '\n'
-        << "flatness c/b: " << num(m.flatness) << '\n'
-        << "Wadell sphericity: " << num(m.wadell_sphericity) << '\n'
-        << "Krumbein sphericity: " << num(m.krumbein_sphericity) << '\n';
-    if (shape.stretch) out << "stretch t (axes 1 : t : t^2): " << num(*shape.stretch) << '\n';
+        << "elongation b/a: " << short_number(m.elongation) << '\n'
+        << "flatness c/b: " << short_number(m.flatness) << '\n'
+        << "Wadell sphericity: " << short_number(m.wadell_sphericity) << '\n'
+        << "Krumbein sphericity: " << short_number(m.krumbein_sphericity) << '\n';
+    if (shape.stretch)
+        out << "stretch t (axes 1 : t : t^2): " << short_number(*shape.stretch) << '\n';
     out << "hull: " << rock.hull.vertices.size() << " vertices, " << rock.hull.triangles.size()
         << " triangles"
         << (rock.radius > 0.0 ? " (display only: simulated as an exact sphere)" : "") << '\n';
@@ -88,7 +83,7 @@ std::string shape_mesh_header(const ShapeView& shape) {
                        "principal axes along x, y, z, long axis x)";
     if (shape.rock->radius > 0.0) {
         text += "\ndisplay tessellation: the engine simulates an exact sphere of radius " +
-                num(shape.rock->radius) + " m";
+                short_number(shape.rock->radius) + " m";
     }
     return text;
 }

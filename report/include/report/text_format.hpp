@@ -13,4 +13,13 @@ inline std::string fmt(const char* format, double value) {
     return buffer;
 }
 
+/// `value` with 6 significant digits ("%.6g"), the precision of geometry reports.
+inline std::string short_number(double value) { return fmt("%.6g", value); }
+
+/// Three components (a point, axis lengths, moments) as "x y z" with short_number.
+template <class Vector>
+std::string triple(const Vector& v) {
+    return short_number(v[0]) + " " + short_number(v[1]) + " " + short_number(v[2]);
+}
+
 }  // namespace rockfall::report
