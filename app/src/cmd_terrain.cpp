@@ -4,16 +4,13 @@
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
-#include "report/text_format.hpp"
+#include "report/terrain_report.hpp"
 #include "scenario/scenario_file.hpp"
 
 #include "shapes/mesh_io.hpp"
 #include "shapes/slope.hpp"
 #include "shapes/terrain.hpp"
 
-#include <nlohmann/json.hpp>
-
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -35,58 +32,6 @@ struct TerrainArgs {
     std::optional<std::uint64_t> seed;
 };
 
-// Heights of the mesh's vertices above the reference profile, inside the slope's footprint.
-struct Deviation {
-    double max = 0.0;
-    double rms = 0.0;
-    std::size_t vertices = 0;
-};
-
-Deviation deviation(const shapes::Terrain& terrain, const shapes::Slope& slope) {
-    Deviation out;
-    double squares = 0.0;
-    const double half = 0.5 * slope.spec().width;
-    for (const shapes::Vec3& v : terrain.mesh().vertices) {
-        if (v.x() < 0.0 || v.x() > slope.end_x() || std::abs(v.y()) > half) continue;
-        const double dz = v.z() - slope.surface_height(v.x());
-        out.max = std::max(out.max, std::abs(dz));
-        squares += dz * dz;
-        ++out.vertices;
-    }
-    if (out.vertices > 0) out.rms = std::sqrt(squares / static_cast<double>(out.vertices));
-    return out;
-}
-
-void describe(const scenario::ScenarioFile& file, const shapes::Terrain& terrain, bool json) {
-    const shapes::Slope slope(file.scenario.slope);
-    const Deviation d = deviation(terrain, slope);
-    const auto array = [](const shapes::Vec3& v) { return nlohmann::json{v[0], v[1], v[2]}; };
-    if (json) {
-        std::cout << nlohmann::json{{"scenario", file.path.string()},
-                                    {"name", terrain.name()},
-                                    {"vertices", terrain.mesh().vertices.size()},
-                                    {"triangles", terrain.mesh().triangles.size()},
-                                    {"dropped_triangles", terrain.dropped_triangles()},
-                                    {"lower_m", array(terrain.lower())},
-                                    {"upper_m", array(terrain.upper())},
-                                    {"profile_deviation_max_m", d.max},
-                                    {"profile_deviation_rms_m", d.rms}}
-                         .dump(2)
-                  << '\n';
-        return;
-    }
-    std::cout << "terrain: " << terrain.name() << " (" << file.path.string() << ")\n"
-              << "mesh: " << terrain.mesh().vertices.size() << " vertices, "
-              << terrain.mesh().triangles.size() << " triangles";
-    if (terrain.dropped_triangles() > 0) {
-        std::cout << " (" << terrain.dropped_triangles() << " degenerate triangles dropped)";
-    }
-    std::cout << "\nbounding box: " << report::triple(terrain.lower()) << " to "
-              << report::triple(terrain.upper()) << " m\nheight above the reference profile, "
-              << d.vertices << " vertices over the footprint: largest |dz| "
-              << report::short_number(d.max) << " m, rms " << report::short_number(d.rms) << " m\n";
-}
-
 bool generation_options(const TerrainArgs& args) {
     return args.spacing || args.margin || args.roughness || args.wavelength || args.seed;
 }
@@ -101,6 +46,7 @@ void run(const TerrainArgs& args) {
     }
     shapes::TriangleMesh generated;
     std::string comment;
+    const std::string file_name = file.path.filename().string();
     if (!terrain) {
         shapes::TerrainGrid grid;
         grid.spacing = args.spacing.value_or(grid.spacing);
@@ -109,16 +55,9 @@ void run(const TerrainArgs& args) {
         grid.wavelength = args.wavelength.value_or(grid.wavelength);
         grid.seed = args.seed.value_or(grid.seed);
         generated = shapes::profile_terrain(file.scenario.slope, grid);
-        comment = "rockfall terrain: the reference profile of " + file.path.filename().string() +
-                  "\nspacing " + report::short_number(grid.spacing) + " m, margin " +
-                  report::short_number(grid.margin) + " m, relief rms " +
-                  report::short_number(grid.roughness) + " m, shortest wavelength " +
-                  report::short_number(grid.wavelength) + " m, seed " + std::to_string(grid.seed) +
-                  "\nslope frame (m): x downslope from the crown, y across, z up";
+        comment = report::profile_mesh_comment(file_name, grid);
     } else {
-        comment = "rockfall terrain: " + terrain->name() + " of " + file.path.filename().string() +
-                  " as the engine simulates it\nslope frame (m): x downslope from the crown, y "
-                  "across, z up";
+        comment = report::terrain_mesh_comment(file_name, *terrain);
     }
     const shapes::TriangleMesh& mesh = terrain ? terrain->mesh() : generated;
     if (args.obj) {
@@ -126,19 +65,19 @@ void run(const TerrainArgs& args) {
         shapes::write_obj(out.stream(), mesh, comment);
         out.commit();
     }
+    const std::string path = file.path.string();
     if (terrain) {
-        describe(file, *terrain, args.json);
+        const shapes::ProfileDeviation deviation =
+            shapes::profile_deviation(*terrain, shapes::Slope(file.scenario.slope));
+        if (args.json) {
+            std::cout << report::terrain_json(path, *terrain, deviation).dump(2) << '\n';
+        } else {
+            report::print_terrain_text(std::cout, path, *terrain, deviation);
+        }
     } else if (args.json) {
-        std::cout << nlohmann::json{{"scenario", file.path.string()},
-                                    {"name", nullptr},
-                                    {"vertices", mesh.vertices.size()},
-                                    {"triangles", mesh.triangles.size()}}
-                         .dump(2)
-                  << '\n';
+        std::cout << report::profile_mesh_json(path, mesh).dump(2) << '\n';
     } else {
-        std::cout << "terrain: none (" << file.path.string()
-                  << " uses its profile segments); triangulated profile: " << mesh.vertices.size()
-                  << " vertices, " << mesh.triangles.size() << " triangles\n";
+        report::print_profile_mesh_text(std::cout, path, mesh);
     }
     if (args.obj && !args.json) std::cout << "mesh written to " << *args.obj << '\n';
 }

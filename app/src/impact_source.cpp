@@ -9,7 +9,6 @@
 #include <cmath>
 #include <fstream>
 #include <optional>
-#include <stdexcept>
 
 namespace rockfall::app {
 namespace {
@@ -17,12 +16,6 @@ namespace {
 bool positive(double x) { return std::isfinite(x) && x > 0.0; }
 
 }  // namespace
-
-HitVelocity parse_hit_velocity(const std::string& name) {
-    if (name == "normal") return HitVelocity::normal;
-    if (name == "total") return HitVelocity::total;
-    throw std::invalid_argument("--velocity = \"" + name + "\": must be normal or total");
-}
 
 bool is_sqlite_file(const std::filesystem::path& path) {
     // Every SQLite 3 database starts with these 16 bytes (sqlite.org/fileformat.html, 1.3.1).
@@ -34,13 +27,15 @@ bool is_sqlite_file(const std::filesystem::path& path) {
            std::equal(head, head + sizeof head, magic);
 }
 
-ImpactData database_impacts(const std::filesystem::path& path, HitVelocity velocity) {
+report::ImpactData database_impacts(const std::filesystem::path& path,
+                                    report::HitVelocity velocity) {
     const db::ResultsDb database = db::ResultsDb::open(path, false);
-    ImpactData data;
+    report::ImpactData data;
     data.from_database = true;
     for (db::WallImpact& hit : db::read_wall_impacts(database)) {
         risk::ImpactRow row;
-        row.velocity = velocity == HitVelocity::normal ? hit.normal_speed : hit.impact_speed;
+        row.velocity =
+            velocity == report::HitVelocity::normal ? hit.normal_speed : hit.impact_speed;
         row.peak_force = hit.peak_force;
         row.mass = hit.mass;
         const std::optional<risk::ImpactShape> shape = risk::find_impact_shape(hit.kind);
@@ -55,48 +50,9 @@ ImpactData database_impacts(const std::filesystem::path& path, HitVelocity veloc
     return data;
 }
 
-void drop_slow(ImpactData& data, double min_velocity) {
-    if (!(std::isfinite(min_velocity) && min_velocity >= 0.0)) {
-        throw std::invalid_argument("--min-velocity = " + std::to_string(min_velocity) +
-                                    " m/s: must be finite and >= 0");
-    }
-    ImpactData kept;
-    kept.from_database = data.from_database;
-    kept.skipped = data.skipped;
-    kept.slow = data.slow;
-    for (std::size_t i = 0; i < data.rows.size(); ++i) {
-        if (data.rows[i].velocity < min_velocity) {
-            ++kept.slow;
-            continue;
-        }
-        kept.rows.push_back(data.rows[i]);
-        if (data.from_database) kept.hits.push_back(std::move(data.hits[i]));
-    }
-    data = std::move(kept);
-}
-
-std::string describe(const ImpactData& data, const std::string& input, HitVelocity velocity) {
-    std::string left_out;
-    if (data.skipped > 0) {
-        left_out += std::to_string(data.skipped) +
-                    " of a kind without a shape class or without a positive velocity, load or "
-                    "mass";
-    }
-    if (data.slow > 0) {
-        left_out += (left_out.empty() ? "" : ", ") + std::to_string(data.slow) +
-                    " slower than --min-velocity";
-    }
-    const std::string n = std::to_string(data.rows.size());
-    return input +
-           (data.from_database ? " (results database: " + n + " wall hits, velocity " +
-                                     (velocity == HitVelocity::normal ? "normal" : "total")
-                               : " (" + n + " rows") +
-           (left_out.empty() ? "" : "; left out: " + left_out) + ")";
-}
-
-ImpactData load_impacts(const std::filesystem::path& path, HitVelocity velocity) {
+report::ImpactData load_impacts(const std::filesystem::path& path, report::HitVelocity velocity) {
     if (is_sqlite_file(path)) return database_impacts(path, velocity);
-    ImpactData data;
+    report::ImpactData data;
     data.rows = scenario::read_impact_csv(path);
     return data;
 }

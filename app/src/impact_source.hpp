@@ -2,59 +2,21 @@
 /// Wall impacts for `rockfall fit` and `rockfall envelope`: measured rows from a CSV file, or
 /// every wall hit of a sweep from its results database.
 
-#include "db/wall_impacts.hpp"
-#include "risk/impact_fit.hpp"
+#include "report/impact_data.hpp"
 
-#include <cstddef>
 #include <filesystem>
 #include <string>
-#include <vector>
 
 namespace rockfall::app {
-
-/// Which velocity of a simulated hit the formula is given.
-enum class HitVelocity {
-    /// The component normal to the wall, which the formula's normal (Hertz) impact sees.
-    normal,
-    /// |v| at first touch, as a camera measures the velocity just before the hit.
-    total,
-};
-
-/// "normal" or "total"; throws std::invalid_argument otherwise.
-HitVelocity parse_hit_velocity(const std::string& name);
-
-/// Impact rows with, for a database, the hit each row comes from.
-struct ImpactData {
-    /// Rows in SI units.
-    std::vector<risk::ImpactRow> rows;
-    /// Whether they come from a results database.
-    bool from_database = false;
-    /// For a database: the hit of each row (same order); empty for a CSV file.
-    std::vector<db::WallImpact> hits;
-    /// For a database: hits left out because their kind has no shape class of the formula
-    /// (not sphere, massive or planar) or they lack a positive velocity, force or mass.
-    std::size_t skipped = 0;
-    /// Rows left out as slower than the minimum velocity asked for (drop_slow).
-    std::size_t slow = 0;
-};
 
 /// True when the file starts with the SQLite header ("SQLite format 3").
 bool is_sqlite_file(const std::filesystem::path& path);
 
 /// The impacts of a results database; throws db::DatabaseError for a bad file.
-ImpactData database_impacts(const std::filesystem::path& path, HitVelocity velocity);
+report::ImpactData database_impacts(const std::filesystem::path& path,
+                                    report::HitVelocity velocity);
 
-/// A results database's impacts, or a CSV file's rows (app/impact_csv.hpp).
-ImpactData load_impacts(const std::filesystem::path& path, HitVelocity velocity);
-
-/// Leaves out the rows (and their hits) slower than `min_velocity` (m/s, finite, >= 0),
-/// counting them in `slow`: a rock pressed against the wall at a few cm/s loads it with its
-/// weight and push, not by an impact the formula describes. Throws std::invalid_argument for
-/// a bad minimum.
-void drop_slow(ImpactData& data, double min_velocity);
-
-/// One line on where the rows come from and what was left out, for the reports:
-/// "FILE (results database: N wall hits, velocity normal; left out: ...)".
-std::string describe(const ImpactData& data, const std::string& input, HitVelocity velocity);
+/// A results database's impacts, or a CSV file's rows (scenario/impact_csv.hpp).
+report::ImpactData load_impacts(const std::filesystem::path& path, report::HitVelocity velocity);
 
 }  // namespace rockfall::app

@@ -236,4 +236,19 @@ Ground ground_at(const Slope& slope, double x, double y) {
     return {slope.surface_height(x), slope.surface_normal(x)};
 }
 
+ProfileDeviation profile_deviation(const Terrain& terrain, const Slope& slope) {
+    ProfileDeviation out;
+    double squares = 0.0;
+    const double half = 0.5 * slope.spec().width;
+    for (const Vec3& v : terrain.mesh().vertices) {
+        if (v.x() < 0.0 || v.x() > slope.end_x() || std::abs(v.y()) > half) continue;
+        const double dz = v.z() - slope.surface_height(v.x());
+        out.max = std::max(out.max, std::abs(dz));
+        squares += dz * dz;
+        ++out.vertices;
+    }
+    if (out.vertices > 0) out.rms = std::sqrt(squares / static_cast<double>(out.vertices));
+    return out;
+}
+
 }  // namespace rockfall::shapes

@@ -34,3 +34,36 @@ TEST_CASE("envelope statistics reject bad ratios", "[risk][envelope]") {
     CHECK_THROWS_WITH(envelope_stats({0.5, -1.0}), Contains("ratio[1] = -1"));
     CHECK_THROWS_WITH(envelope_stats({0.5}, 1.5), Contains("confidence"));
 }
+
+TEST_CASE("every impact is compared with its shape's formula", "[risk][envelope]") {
+    // Two rows of the same mass and velocity: a sphere at exactly the seed preset's load and
+    // a planar rock at twice its preset's load.
+    ImpactRow sphere{2.5, 0.0, 10.0, ImpactShape::sphere};
+    sphere.peak_force = jra_impact_force(10.0, 2.5, seed_coefficients(ImpactShape::sphere));
+    ImpactRow planar{2.5, 0.0, 10.0, ImpactShape::planar};
+    planar.peak_force = 2.0 * jra_impact_force(10.0, 2.5, seed_coefficients(ImpactShape::planar));
+    const std::vector<ImpactRow> rows = {sphere, planar};
+
+    const std::vector<ComparedImpact> compared = compare_with_formula(rows, EnvelopeFormula{});
+    REQUIRE(compared.size() == 2);
+    CHECK_THAT(compared[0].ratio, WithinRel(1.0, 1e-12));
+    CHECK_THAT(compared[1].ratio, WithinRel(2.0, 1e-12));
+    CHECK(ratios_of(compared, rows, ImpactShape::planar) == std::vector<double>{compared[1].ratio});
+    CHECK(ratios_of(compared, rows, ImpactShape::massive).empty());
+    CHECK(worst_impacts(compared, 5) == std::vector<std::size_t>{1, 0});
+    CHECK(worst_impacts(compared, 1) == std::vector<std::size_t>{1});
+
+    // An explicit beta replaces every shape's preset; jra is alpha = beta = 1 at the lambda.
+    EnvelopeFormula given;
+    given.beta = 1.0;
+    CHECK(envelope_coefficients(given, ImpactShape::planar).beta == 1.0);
+    EnvelopeFormula jra{"jra", 5e8, std::nullopt, std::nullopt};
+    const ImpactCoefficients c = envelope_coefficients(jra, ImpactShape::massive);
+    CHECK(c.alpha == 1.0);
+    CHECK(c.beta == 1.0);
+    CHECK(c.lambda == 5e8);
+    CHECK_THROWS_WITH(envelope_coefficients(EnvelopeFormula{"jra"}, ImpactShape::sphere),
+                      Contains("needs lambda"));
+    CHECK_THROWS_WITH(envelope_coefficients(EnvelopeFormula{"uni"}, ImpactShape::sphere),
+                      Contains("must be seed or jra"));
+}

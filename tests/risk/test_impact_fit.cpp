@@ -1,4 +1,5 @@
 #include "risk/impact_fit.hpp"
+#include "risk/impact_identification.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -169,4 +170,48 @@ TEST_CASE("fit rejects bad rows naming them", "[risk][fit]") {
     CHECK_THROWS_WITH(fit_impacts(falling, options), Contains("use the power regression"));
     CHECK_THROWS_WITH(parse_regression_form("cubic"), Contains("must be power or linear"));
     CHECK(parse_regression_form("linear") == RegressionForm::linear);
+}
+
+TEST_CASE("identification over shapes takes lambda from the spheres, then beta per shape",
+          "[risk][fit]") {
+    // Noise-free spheres at lambda 300 MN/m2 and planar rocks with beta 0.4 at the same lambda;
+    // two massive rows are too few to fit and are listed.
+    std::vector<ImpactRow> rows = synthetic(12, {3.0e8, 1.0, 1.0}, {10.0}, false);
+    for (ImpactRow planar : synthetic(12, {3.0e8, 1.0, 0.4}, {10.0}, false)) {
+        planar.shape = ImpactShape::planar;
+        rows.push_back(planar);
+    }
+    for (ImpactRow massive : synthetic(2, {3.0e8, 1.0, 0.5}, {10.0}, false)) {
+        massive.shape = ImpactShape::massive;
+        rows.push_back(massive);
+    }
+    CHECK(shape_counts(rows) == "sphere 12, massive 2, planar 12");
+
+    const Identification id = identify_shapes(rows, IdentificationOptions{}, "rows.csv");
+    REQUIRE(id.fits.size() == 2);
+    CHECK(id.fits[0].shape == ImpactShape::sphere);
+    CHECK(id.fits[0].lambda_source == LambdaSource::identified);
+    CHECK_THAT(id.fits[0].fit.coefficients.lambda, WithinRel(3.0e8, 1e-9));
+    CHECK(id.fits[1].shape == ImpactShape::planar);
+    CHECK(id.fits[1].lambda_source == LambdaSource::spheres);
+    CHECK(id.fits[1].rows.size() == 12);
+    CHECK_THAT(id.fits[1].fit.coefficients.lambda, WithinRel(3.0e8, 1e-9));
+    CHECK_THAT(id.fits[1].fit.coefficients.beta, WithinRel(0.4, 1e-9));
+    REQUIRE(id.too_few.size() == 1);
+    CHECK(id.too_few[0] == std::pair<ImpactShape, std::size_t>{ImpactShape::massive, 2});
+
+    IdentificationOptions given;
+    given.lambda = 3.0e8;
+    given.shape = "planar";
+    const Identification planar = identify_shapes(rows, given, "rows.csv");
+    REQUIRE(planar.fits.size() == 1);
+    CHECK(planar.fits[0].lambda_source == LambdaSource::given);
+    CHECK(planar.too_few.empty());
+
+    IdentificationOptions massive;
+    massive.shape = "massive";
+    CHECK_THROWS_WITH(identify_shapes(rows, massive, "rows.csv"),
+                      Contains("rows.csv has 2 rows of shape massive: a fit needs 3"));
+    CHECK_THROWS_WITH(identify_shapes({rows.back()}, IdentificationOptions{}, "one.csv"),
+                      Contains("one.csv: no shape has the 3 rows a fit needs (it has: massive 1)"));
 }

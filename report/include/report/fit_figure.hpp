@@ -4,7 +4,7 @@
 
 #include "report/svg_plot.hpp"
 
-#include "risk/impact_fit.hpp"
+#include "risk/impact_identification.hpp"
 
 #include <filesystem>
 #include <string>
@@ -12,15 +12,7 @@
 
 namespace rockfall::report {
 
-/// One shape's rows and the coefficients identified from them.
-struct ShapeFit {
-    /// The shape class.
-    risk::ImpactShape shape = risk::ImpactShape::sphere;
-    /// Its rows (SI units).
-    std::vector<risk::ImpactRow> rows;
-    /// The identification.
-    risk::ImpactFit fit;
-};
+using risk::ShapeFit;
 
 /// The plot: per shape (colour and marker by shape) the data (scaled to the reference mass
 /// when the masses differ), the mean and mean + 1 sigma regression lines over the data's

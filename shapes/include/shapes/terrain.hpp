@@ -8,6 +8,7 @@
 #include "shapes/mesh_io.hpp"
 #include "shapes/polyhedron.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -102,6 +103,18 @@ Terrain read_terrain(const std::filesystem::path& file, const TerrainPlacement& 
 /// The ground under (x, y): the terrain's top surface where the slope has a terrain that
 /// covers (x, y); the reference profile's surface at x everywhere else.
 Ground ground_at(const Slope& slope, double x, double y);
+
+/// How far a terrain departs from the slope's reference profile: the height dz of its
+/// vertices above the profile, over the slope's footprint (0 <= x <= end, |y| <= width / 2).
+struct ProfileDeviation {
+    /// Largest |dz| and root mean square of dz, m; 0 without vertices over the footprint.
+    double max = 0.0;
+    double rms = 0.0;
+    /// Vertices over the footprint.
+    std::size_t vertices = 0;
+};
+
+ProfileDeviation profile_deviation(const Terrain& terrain, const Slope& slope);
 
 /// A regular triangulation of a slope's reference profile, for tests and sample terrains.
 struct TerrainGrid {

@@ -1,0 +1,59 @@
+// The impacts of a fit or envelope report (see impact_data.hpp).
+
+#include "report/impact_data.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rockfall::report {
+
+HitVelocity parse_hit_velocity(const std::string& name) {
+    if (name == "normal") return HitVelocity::normal;
+    if (name == "total") return HitVelocity::total;
+    throw std::invalid_argument("--velocity = \"" + name + "\": must be normal or total");
+}
+
+const char* to_string(HitVelocity velocity) {
+    return velocity == HitVelocity::normal ? "normal" : "total";
+}
+
+void drop_slow(ImpactData& data, double min_velocity) {
+    if (!(std::isfinite(min_velocity) && min_velocity >= 0.0)) {
+        throw std::invalid_argument("--min-velocity = " + std::to_string(min_velocity) +
+                                    " m/s: must be finite and >= 0");
+    }
+    ImpactData kept;
+    kept.from_database = data.from_database;
+    kept.skipped = data.skipped;
+    kept.slow = data.slow;
+    for (std::size_t i = 0; i < data.rows.size(); ++i) {
+        if (data.rows[i].velocity < min_velocity) {
+            ++kept.slow;
+            continue;
+        }
+        kept.rows.push_back(data.rows[i]);
+        if (data.from_database) kept.hits.push_back(std::move(data.hits[i]));
+    }
+    data = std::move(kept);
+}
+
+std::string describe(const ImpactData& data, const std::string& input, HitVelocity velocity) {
+    std::string left_out;
+    if (data.skipped > 0) {
+        left_out += std::to_string(data.skipped) +
+                    " of a kind without a shape class or without a positive velocity, load or "
+                    "mass";
+    }
+    if (data.slow > 0) {
+        left_out += (left_out.empty() ? "" : ", ") + std::to_string(data.slow) +
+                    " slower than --min-velocity";
+    }
+    const std::string n = std::to_string(data.rows.size());
+    return input +
+           (data.from_database ? " (results database: " + n + " wall hits, velocity " +
+                                     to_string(velocity)
+                               : " (" + n + " rows") +
+           (left_out.empty() ? "" : "; left out: " + left_out) + ")";
+}
+
+}  // namespace rockfall::report
