@@ -2,7 +2,7 @@
 
 #include "commands.hpp"
 #include "report/formula_report.hpp"
-#include "scenario/csv_table.hpp"
+#include "scenario/impact_csv.hpp"
 
 #include "risk/design_values.hpp"
 
@@ -60,30 +60,13 @@ void reject_foreign_options(const CLI::App& cmd, const std::string& formula) {
     }
 }
 
-// uni's sample: the CSV columns velocity_m_s and bounce_height_m, each >= 0.
-report::DesignSample read_sample(const std::optional<std::string>& path) {
+// uni's sample file, which must be given.
+risk::DesignSample read_sample(const std::optional<std::string>& path) {
     if (!path) {
         throw std::invalid_argument(
             "give --sample FILE.csv with columns velocity_m_s and bounce_height_m");
     }
-    const scenario::CsvTable table = scenario::CsvTable::read(*path);
-    const std::size_t v_column = table.require("velocity_m_s");
-    const std::size_t h_column = table.require("bounce_height_m");
-    report::DesignSample sample;
-    sample.source = table.source();
-    for (std::size_t row = 0; row < table.rows(); ++row) {
-        for (const std::size_t column : {v_column, h_column}) {
-            if (table.number(row, column) < 0.0) {
-                throw scenario::CsvError(table.where(row, column) + " = " +
-                                         table.text(row, column) + ": must be >= 0");
-            }
-        }
-        sample.speeds.push_back(table.number(row, v_column));
-        sample.heights.push_back(table.number(row, h_column));
-    }
-    if (sample.speeds.empty())
-        throw scenario::CsvError(table.source() + ": no data rows after the header");
-    return sample;
+    return scenario::read_design_sample(*path);
 }
 
 void add_partial_factors(CLI::App* cmd, risk::PartialFactors& f) {

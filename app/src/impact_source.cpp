@@ -7,7 +7,6 @@
 #include "db/results_db.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <optional>
 
 namespace rockfall::app {
@@ -16,16 +15,6 @@ namespace {
 bool positive(double x) { return std::isfinite(x) && x > 0.0; }
 
 }  // namespace
-
-bool is_sqlite_file(const std::filesystem::path& path) {
-    // Every SQLite 3 database starts with these 16 bytes (sqlite.org/fileformat.html, 1.3.1).
-    static constexpr char magic[] = "SQLite format 3";
-    char head[sizeof magic] = {};
-    std::ifstream in(path, std::ios::binary);
-    in.read(head, sizeof head);
-    return in.gcount() == static_cast<std::streamsize>(sizeof head) &&
-           std::equal(head, head + sizeof head, magic);
-}
 
 report::ImpactData database_impacts(const std::filesystem::path& path,
                                     report::HitVelocity velocity) {
@@ -51,7 +40,7 @@ report::ImpactData database_impacts(const std::filesystem::path& path,
 }
 
 report::ImpactData load_impacts(const std::filesystem::path& path, report::HitVelocity velocity) {
-    if (is_sqlite_file(path)) return database_impacts(path, velocity);
+    if (db::is_sqlite_file(path)) return database_impacts(path, velocity);
     report::ImpactData data;
     data.rows = scenario::read_impact_csv(path);
     return data;

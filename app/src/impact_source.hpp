@@ -9,9 +9,6 @@
 
 namespace rockfall::app {
 
-/// True when the file starts with the SQLite header ("SQLite format 3").
-bool is_sqlite_file(const std::filesystem::path& path);
-
 /// The impacts of a results database; throws db::DatabaseError for a bad file.
 report::ImpactData database_impacts(const std::filesystem::path& path,
                                     report::HitVelocity velocity);

@@ -129,6 +129,16 @@ void require_creatable(const fs::path& path) {
     }
 }
 
+bool is_sqlite_file(const std::filesystem::path& path) {
+    // Every SQLite 3 database starts with these 16 bytes (sqlite.org/fileformat.html, 1.3.1).
+    static constexpr char magic[] = "SQLite format 3";
+    std::array<char, sizeof magic> head{};
+    std::ifstream in(path, std::ios::binary);
+    in.read(head.data(), head.size());
+    return in.gcount() == static_cast<std::streamsize>(head.size()) &&
+           std::memcmp(head.data(), magic, sizeof magic) == 0;
+}
+
 void require_database_file(const fs::path& path, bool writable) {
     std::error_code error;
     const fs::file_status status = fs::status(path, error);
@@ -155,14 +165,12 @@ void require_database_file(const fs::path& path, bool writable) {
     // or an empty database it would happily write to); the header says it plainly first.
     std::ifstream in(path, std::ios::binary);
     if (!in) refuse(path, ": cannot read it; check its permissions");
-    std::array<char, 16> header{};
-    in.read(header.data(), header.size());
-    if (in.gcount() == 0) {
+    if (in.peek() == std::ifstream::traits_type::eof()) {
         refuse(path,
                " is empty, not a rockfall results database; give a file written by "
                "`rockfall sweep`");
     }
-    if (in.gcount() < 16 || std::memcmp(header.data(), "SQLite format 3", 16) != 0) {
+    if (!is_sqlite_file(path)) {
         refuse(path,
                " is not an SQLite database, so not a rockfall results database; give a "
                "file written by `rockfall sweep`");

@@ -19,8 +19,8 @@ std::string stats_text(const risk::EnvelopeStats& s) {
            percent(s.share) + ", " + fmt("%.0f %% CI ", 100.0 * s.confidence) +
            percent(s.interval.lower) + " .. " + percent(s.interval.upper) + "); ratio min " +
            fmt("%.3g", s.min) + ", median " + fmt("%.3g", s.median) + ", mean " +
-           fmt("%.3g", s.mean) + ", p95 " + fmt("%.3g", s.p95) + ", p99 " +
-           fmt("%.3g", s.p99) + ", max " + fmt("%.3g", s.max);
+           fmt("%.3g", s.mean) + ", p95 " + fmt("%.3g", s.p95) + ", p99 " + fmt("%.3g", s.p99) +
+           ", max " + fmt("%.3g", s.max);
 }
 
 nlohmann::json stats_json(const risk::EnvelopeStats& s) {
@@ -59,9 +59,8 @@ nlohmann::json worst_json(const risk::ComparedImpact& c, const ImpactData& data)
 void print_worst(std::ostream& out, const std::vector<risk::ComparedImpact>& compared,
                  const ImpactData& data, const std::vector<std::size_t>& worst) {
     out << "\nworst impacts (largest load / formula):\n"
-              << (data.from_database ? "  rank  sample  hit                  seed"
-                                     : "  rank     row")
-              << "  shape     mass_kg  v_m_s  peak_kN  formula_kN  ratio\n";
+        << (data.from_database ? "  rank  sample  hit                  seed" : "  rank     row")
+        << "  shape     mass_kg  v_m_s  peak_kN  formula_kN  ratio\n";
     for (std::size_t rank = 0; rank < worst.size(); ++rank) {
         const risk::ComparedImpact& c = compared[worst[rank]];
         const risk::ImpactRow& row = data.rows[c.row];

@@ -20,28 +20,23 @@ std::string too_few_text(const risk::Identification& id) {
     return text;
 }
 
-const char* lambda_text(risk::LambdaSource source) {
-    switch (source) {
-        case risk::LambdaSource::identified:
-            return "identified on the mean line (beta = 1)";
-        case risk::LambdaSource::given:
-            return "given (--lambda); beta identified on the mean line";
-        case risk::LambdaSource::spheres:
-            return "identified on this file's spheres; beta identified on the mean line";
-    }
-    return "";
-}
+// How each lambda source is said in the text, and its JSON key.
+struct LambdaWords {
+    const char* text;
+    const char* key;
+};
 
-const char* lambda_key(risk::LambdaSource source) {
+LambdaWords lambda_words(risk::LambdaSource source) {
     switch (source) {
-        case risk::LambdaSource::identified:
-            return "identified";
         case risk::LambdaSource::given:
-            return "given";
+            return {"given (--lambda); beta identified on the mean line", "given"};
         case risk::LambdaSource::spheres:
-            return "spheres";
+            return {"identified on this file's spheres; beta identified on the mean line",
+                    "spheres"};
+        case risk::LambdaSource::identified:
+            break;
     }
-    return "";
+    return {"identified on the mean line (beta = 1)", "identified"};
 }
 
 std::string line_text(const risk::ImpactRegression& r) {
@@ -51,47 +46,44 @@ std::string line_text(const risk::ImpactRegression& r) {
                fmt("; sigma = %.3g (of ln P)", r.sigma);
     }
     return fmt("P = %.4g", r.a / kilo) + fmt(" + %.4g v kN", r.b / kilo) +
-           fmt(" (v in m/s); R^2 = %.3f", r.r_squared) +
-           fmt("; sigma = %.4g kN", r.sigma / kilo);
+           fmt(" (v in m/s); R^2 = %.3f", r.r_squared) + fmt("; sigma = %.4g kN", r.sigma / kilo);
 }
 
 }  // namespace
 
 void print_fit_text(std::ostream& out, const FitView& view) {
     const risk::Identification& id = view.identification;
-    out << "impacts: " << describe(*view.impacts.data, view.impacts.input, view.impacts.velocity) << '\n'
-              << "regression: " << view.regression
-              << (view.regression == "power"
-                      ? ", P = a v^b by least squares on ln P; sigma is the residual sd of ln P"
-                      : ", P = a + b v by least squares; sigma is the residual sd of P")
-              << '\n';
+    out << "impacts: " << describe(*view.impacts.data, view.impacts.input, view.impacts.velocity)
+        << '\n'
+        << "regression: " << view.regression
+        << (view.regression == "power"
+                ? ", P = a v^b by least squares on ln P; sigma is the residual sd of ln P"
+                : ", P = a + b v by least squares; sigma is the residual sd of P")
+        << '\n';
     for (const risk::ShapeFit& result : view.identification.fits) {
         const risk::ImpactFit& f = result.fit;
         const risk::ImpactCoefficients& c = f.coefficients;
         const risk::ImpactCoefficients preset = risk::seed_coefficients(result.shape);
         out << '\n'
-                  << risk::to_string(result.shape) << ": " << f.count << " rows\n"
-                  << "  valid for: impact velocity " << fmt("%.4g", f.velocity_min)
-                  << " .. " << fmt("%.4g m/s", f.velocity_max) << ", mass "
-                  << fmt("%.4g", f.mass_min) << " .. " << fmt("%.4g kg", f.mass_max)
-                  << fmt(" (regression at %.4g kg)", f.reference_mass) << '\n'
-                  << "  mean line: " << line_text(f.regression) << '\n'
-                  << "  lambda = " << fmt("%.4g Pa", c.lambda)
-                  << fmt(" (%.4g MN/m2), ", c.lambda / 1e6)
-                  << lambda_text(result.lambda_source) << '\n'
-                  << "  beta = " << fmt("%.3g", c.beta) << '\n'
-                  << "  alpha = " << fmt("%.3g", c.alpha)
-                  << ", identified on the mean + 1 sigma line\n"
-                  << "  formula vs lines at the data: mean within "
-                  << fmt("%.1f %%", 100.0 * f.mean_mismatch) << ", mean + 1 sigma within "
-                  << fmt("%.1f %%", 100.0 * f.upper_mismatch) << '\n'
-                  << "  seed 000 preset: lambda " << fmt("%.4g Pa", preset.lambda)
-                  << ", alpha " << fmt("%.3g", preset.alpha) << ", beta "
-                  << fmt("%.3g", preset.beta) << '\n';
+            << risk::to_string(result.shape) << ": " << f.count << " rows\n"
+            << "  valid for: impact velocity " << fmt("%.4g", f.velocity_min) << " .. "
+            << fmt("%.4g m/s", f.velocity_max) << ", mass " << fmt("%.4g", f.mass_min) << " .. "
+            << fmt("%.4g kg", f.mass_max) << fmt(" (regression at %.4g kg)", f.reference_mass)
+            << '\n'
+            << "  mean line: " << line_text(f.regression) << '\n'
+            << "  lambda = " << fmt("%.4g Pa", c.lambda) << fmt(" (%.4g MN/m2), ", c.lambda / 1e6)
+            << lambda_words(result.lambda_source).text << '\n'
+            << "  beta = " << fmt("%.3g", c.beta) << '\n'
+            << "  alpha = " << fmt("%.3g", c.alpha) << ", identified on the mean + 1 sigma line\n"
+            << "  formula vs lines at the data: mean within "
+            << fmt("%.1f %%", 100.0 * f.mean_mismatch) << ", mean + 1 sigma within "
+            << fmt("%.1f %%", 100.0 * f.upper_mismatch) << '\n'
+            << "  seed 000 preset: lambda " << fmt("%.4g Pa", preset.lambda) << ", alpha "
+            << fmt("%.3g", preset.alpha) << ", beta " << fmt("%.3g", preset.beta) << '\n';
     }
     if (!id.too_few.empty()) {
         out << "\nnot fitted, fewer than " << risk::kMinFitRows << " rows: " << too_few_text(id)
-                  << '\n';
+            << '\n';
     }
     if (view.svg) out << "\nfigure written to " << *view.svg << '\n';
 }
@@ -122,7 +114,7 @@ nlohmann::json fit_json(const FitView& view) {
                {"sigma_unit", power ? "1 (of ln P)" : "N"},
                {"r_squared", f.regression.r_squared}}},
              {"lambda_Pa", f.coefficients.lambda},
-             {"lambda_source", lambda_key(result.lambda_source)},
+             {"lambda_source", lambda_words(result.lambda_source).key},
              {"alpha", f.coefficients.alpha},
              {"beta", f.coefficients.beta},
              {"mean_mismatch", f.mean_mismatch},

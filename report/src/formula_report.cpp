@@ -44,8 +44,7 @@ void add_mass(FormulaReport& r, double mass) {
 void add_kinematics(FormulaReport& r, double velocity) {
     const double height = risk::jra_equivalent_height(velocity);
     r.add("velocity", fmt("%.6g m/s", velocity), {{"velocity_m_s", velocity}});
-    r.add("equivalent height", fmt("%.6g m (v^2 / 2g)", height),
-          {{"equivalent_height_m", height}});
+    r.add("equivalent height", fmt("%.6g m (v^2 / 2g)", height), {{"equivalent_height_m", height}});
 }
 
 void add_load(FormulaReport& r, const std::string& label, double load) {
@@ -81,18 +80,17 @@ FormulaReport evaluate_jra(const FormulaInputs& args) {
     if (!preset.empty()) r.add("shape preset", preset, {{"shape", preset}});
     add_mass(r, args.mass);
     add_kinematics(r, velocity);
-    r.add("lambda",
-          fmt("%.6g Pa", c.lambda) + fmt(" (%.6g kN/m2)", c.lambda / kilo),
+    r.add("lambda", fmt("%.6g Pa", c.lambda) + fmt(" (%.6g kN/m2)", c.lambda / kilo),
           {{"lambda_Pa", c.lambda}, {"lambda_kN_m2", c.lambda / kilo}});
     r.add("alpha", fmt("%.6g", c.alpha), {{"alpha", c.alpha}});
     r.add("beta", fmt("%.6g", c.beta), {{"beta", c.beta}});
     r.add("g", fmt("%.6g m/s2", risk::jra_gravity), {{"g_m_s2", risk::jra_gravity}});
     add_load(r, "peak load", load);
-    add_validity(r, 
-        args.name == "jra"
-            ? "Hertz contact of elastic spheres: compact rocks, elastic impact"
-            : "coefficients identified on model rocks of about 20 cm and 10 kg at a few m/s "
-              "on a concrete wall");
+    add_validity(
+        r, args.name == "jra"
+               ? "Hertz contact of elastic spheres: compact rocks, elastic impact"
+               : "coefficients identified on model rocks of about 20 cm and 10 kg at a few m/s "
+                 "on a concrete wall");
     return r;
 }
 
@@ -103,8 +101,7 @@ double rock_radius(const FormulaInputs& args, FormulaReport& r) {
     }
     if (args.density) {
         const double radius = risk::equivalent_radius(args.mass, *args.density);
-        r.add("density", fmt("%.6g kg/m3", *args.density),
-              {{"density_kg_m3", *args.density}});
+        r.add("density", fmt("%.6g kg/m3", *args.density), {{"density_kg_m3", *args.density}});
         r.add("radius", fmt("%.6g m (sphere of the rock's volume)", radius),
               {{"radius_m", radius}});
         return radius;
@@ -127,19 +124,18 @@ FormulaReport evaluate_cushion(const FormulaInputs& args) {
     const double velocity = impact_velocity(args);
     add_kinematics(r, velocity);
     const double energy = 0.5 * args.mass * velocity * velocity;
-    r.add("kinetic energy",
-          fmt("%.6g J", energy) + fmt(" (%.6g kJ)", energy / kilo),
+    r.add("kinetic energy", fmt("%.6g J", energy) + fmt(" (%.6g kJ)", energy / kilo),
           {{"kinetic_energy_J", energy}});
     const double radius = rock_radius(args, r);
     const double modulus =
         required(args.modulus, "give --modulus (Pa), the plate-load modulus M_E of the cushion");
-    r.add("cushion modulus M_E",
-          fmt("%.6g Pa", modulus) + fmt(" (%.6g kN/m2)", modulus / kilo),
+    r.add("cushion modulus M_E", fmt("%.6g Pa", modulus) + fmt(" (%.6g kN/m2)", modulus / kilo),
           {{"cushion_modulus_Pa", modulus}, {"cushion_modulus_kN_m2", modulus / kilo}});
     if (!astra) {
         add_load(r, "peak force",
                  risk::labiouse_impact_force({args.mass, velocity, radius, modulus}));
-        add_validity(r, 
+        add_validity(
+            r,
             "rigid block on an elastic cushion thick compared with the block; drop tests up "
             "to about 1 t and 10 m on gravel");
         return r;
@@ -148,12 +144,12 @@ FormulaReport evaluate_cushion(const FormulaInputs& args) {
         required(args.thickness, "give the cushion --thickness (m) for the astra formula");
     const double phi = required(args.friction_angle,
                                 "give the cushion's --friction-angle (deg) for the astra formula");
-    r.add("cushion thickness", fmt("%.6g m", thickness),
-          {{"cushion_thickness_m", thickness}});
+    r.add("cushion thickness", fmt("%.6g m", thickness), {{"cushion_thickness_m", thickness}});
     r.add("friction angle", fmt("%.6g deg", phi), {{"friction_angle_deg", phi}});
     add_load(r, "equivalent static force F_k",
              risk::astra_impact_force({args.mass, velocity, radius, modulus, thickness, phi}));
-    add_validity(r, 
+    add_validity(
+        r,
         "soil or gravel cushion about a block diameter thick or more; characteristic value, "
         "before the guideline's design factors");
     return r;
@@ -171,20 +167,19 @@ FormulaReport evaluate_formula(const FormulaInputs& args) {
     return evaluate_cushion(args);
 }
 
-FormulaReport evaluate_design_values(const FormulaInputs& args, const DesignSample& sample) {
+FormulaReport evaluate_design_values(const FormulaInputs& args, const risk::DesignSample& sample) {
     if (!(args.percentile > 0.0 && args.percentile < 100.0)) {
         throw std::invalid_argument(
             fmt("--percentile = %g %%: must be in (0, 100)", args.percentile));
     }
-    const risk::DesignValues d =
-        risk::uni_design_values(sample.speeds, sample.heights, args.mass, args.percentile / 100.0, args.factors);
+    const risk::DesignValues d = risk::uni_design_values(sample.speeds, sample.heights, args.mass,
+                                                         args.percentile / 100.0, args.factors);
     const risk::PartialFactors& f = args.factors;
     FormulaReport r;
     add_formula(r, args, "design values in the manner of UNI 11211-4:2012");
     r.add("sample", sample.source + " (" + std::to_string(sample.speeds.size()) + " rows)",
           {{"sample", sample.source}, {"rows", sample.speeds.size()}});
-    r.add("percentile", fmt("%.6g %%", args.percentile),
-          {{"percentile_percent", args.percentile}});
+    r.add("percentile", fmt("%.6g %%", args.percentile), {{"percentile_percent", args.percentile}});
     add_mass(r, args.mass);
     r.add("characteristic velocity v_t", fmt("%.6g m/s", d.characteristic_speed),
           {{"characteristic_velocity_m_s", d.characteristic_speed}});
@@ -192,8 +187,7 @@ FormulaReport evaluate_design_values(const FormulaInputs& args, const DesignSamp
           {{"characteristic_height_m", d.characteristic_height}});
     r.add("partial factors",
           fmt("gamma_Tr %.6g", f.trajectory) + fmt(", gamma_Dp %.6g", f.survey) +
-              fmt(", gamma_VolF1 %.6g", f.volume) +
-              fmt(", gamma_gamma %.6g", f.unit_weight),
+              fmt(", gamma_VolF1 %.6g", f.volume) + fmt(", gamma_gamma %.6g", f.unit_weight),
           {{"gamma_Tr", f.trajectory},
            {"gamma_Dp", f.survey},
            {"gamma_VolF1", f.volume},
@@ -202,15 +196,13 @@ FormulaReport evaluate_design_values(const FormulaInputs& args, const DesignSamp
           {{"design_velocity_m_s", d.design_speed}});
     r.add("design height h_d", fmt("%.6g m", d.design_height),
           {{"design_height_m", d.design_height}});
-    r.add("design mass m_d", fmt("%.6g kg", d.design_mass),
-          {{"design_mass_kg", d.design_mass}});
-    r.add(
-        "design energy E_d",
-        fmt("%.2f kJ", d.design_energy / kilo) + fmt(" (%.6g J)", d.design_energy),
-        {{"design_energy_J", d.design_energy}, {"design_energy_kJ", d.design_energy / kilo}});
-    add_validity(r, 
-        "action side only: compare E_d with the barrier's energy class over gamma_E, and "
-        "h_d plus the free margin with its height");
+    r.add("design mass m_d", fmt("%.6g kg", d.design_mass), {{"design_mass_kg", d.design_mass}});
+    r.add("design energy E_d",
+          fmt("%.2f kJ", d.design_energy / kilo) + fmt(" (%.6g J)", d.design_energy),
+          {{"design_energy_J", d.design_energy}, {"design_energy_kJ", d.design_energy / kilo}});
+    add_validity(r,
+                 "action side only: compare E_d with the barrier's energy class over gamma_E, and "
+                 "h_d plus the free margin with its height");
     return r;
 }
 

@@ -50,9 +50,9 @@ std::string describe(const ImpactData& data, const std::string& input, HitVeloci
     }
     const std::string n = std::to_string(data.rows.size());
     return input +
-           (data.from_database ? " (results database: " + n + " wall hits, velocity " +
-                                     to_string(velocity)
-                               : " (" + n + " rows") +
+           (data.from_database
+                ? " (results database: " + n + " wall hits, velocity " + to_string(velocity)
+                : " (" + n + " rows") +
            (left_out.empty() ? "" : "; left out: " + left_out) + ")";
 }
 

@@ -55,8 +55,8 @@ nlohmann::json profile_mesh_json(const std::string& scenario, const shapes::Tria
 }
 
 std::string terrain_mesh_comment(const std::string& file, const shapes::Terrain& terrain) {
-    return "rockfall terrain: " + terrain.name() + " of " + file +
-           " as the engine simulates it\n" + kSlopeFrame;
+    return "rockfall terrain: " + terrain.name() + " of " + file + " as the engine simulates it\n" +
+           kSlopeFrame;
 }
 
 std::string profile_mesh_comment(const std::string& file, const shapes::TerrainGrid& grid) {

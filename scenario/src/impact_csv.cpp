@@ -60,4 +60,24 @@ std::vector<risk::ImpactRow> read_impact_csv(const std::filesystem::path& path) 
     return impact_rows(CsvTable::read(path));
 }
 
+risk::DesignSample read_design_sample(const std::filesystem::path& path) {
+    const CsvTable table = CsvTable::read(path);
+    const std::size_t v_column = table.require("velocity_m_s");
+    const std::size_t h_column = table.require("bounce_height_m");
+    risk::DesignSample sample;
+    sample.source = table.source();
+    for (std::size_t row = 0; row < table.rows(); ++row) {
+        for (const std::size_t column : {v_column, h_column}) {
+            if (table.number(row, column) < 0.0) {
+                throw CsvError(table.where(row, column) + " = " + table.text(row, column) +
+                               ": must be >= 0");
+            }
+        }
+        sample.speeds.push_back(table.number(row, v_column));
+        sample.heights.push_back(table.number(row, h_column));
+    }
+    if (sample.speeds.empty()) throw CsvError(table.source() + ": no data rows after the header");
+    return sample;
+}
+
 }  // namespace rockfall::scenario

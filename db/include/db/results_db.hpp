@@ -96,6 +96,10 @@ struct SampleRecord {
     std::vector<engine::RockState> trajectory;
 };
 
+/// True when the file starts with the SQLite 3 header ("SQLite format 3" and a zero byte): a
+/// cheap test of which kind of input a command was given, before opening it.
+bool is_sqlite_file(const std::filesystem::path& path);
+
 /// An open results database.
 class ResultsDb {
   public:

@@ -44,15 +44,6 @@ struct FormulaInputs {
     risk::PartialFactors factors;
 };
 
-/// A uni sample: one row per rock.
-struct DesignSample {
-    /// Where it was read from, echoed.
-    std::string source;
-    /// Speeds, m/s, and bounce heights, m (same length, each >= 0).
-    std::vector<double> speeds;
-    std::vector<double> heights;
-};
-
 /// The evaluated formula.
 struct FormulaReport {
     /// "label: text" lines in the order they are printed.
@@ -68,7 +59,7 @@ struct FormulaReport {
 FormulaReport evaluate_formula(const FormulaInputs& inputs);
 
 /// Evaluates uni on a sample; throws std::invalid_argument for a bad percentile.
-FormulaReport evaluate_design_values(const FormulaInputs& inputs, const DesignSample& sample);
+FormulaReport evaluate_design_values(const FormulaInputs& inputs, const risk::DesignSample& sample);
 
 /// The readable lines, one "label: text" a line.
 void print_formula_report(std::ostream& out, const FormulaReport& report);

@@ -16,6 +16,7 @@
 /// manual; the standard itself (paywalled) was not read.
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace rockfall::risk {
@@ -35,6 +36,15 @@ struct PartialFactors {
     double volume = 1.10;
     /// gamma_gamma, on the rock's unit weight: >= 1, generally 1.00.
     double unit_weight = 1.00;
+};
+
+/// A sample of trajectories as the standard reads it: one speed and one bounce height per rock.
+struct DesignSample {
+    /// Where it was read from, echoed in reports.
+    std::string source;
+    /// Speeds, m/s, and bounce (passing) heights, m, each >= 0.
+    std::vector<double> speeds;
+    std::vector<double> heights;
 };
 
 /// The design values and the characteristic values they come from.
