@@ -3,10 +3,8 @@
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
-#include "report/fit_figure.hpp"
 #include "report/query_table.hpp"
 #include "report/soil_report.hpp"
-#include "report/text_format.hpp"
 #include "scenario/load_record.hpp"
 #include "scenario/soil_file.hpp"
 #include "soil_record.hpp"
@@ -85,51 +83,6 @@ void write_csv(const fs::path& path, const db::SoilRunRecord& record) {
     file.commit();
 }
 
-void print_comparison(std::ostream& out, const risk::HistoryComparison& c,
-                      const risk::LoadHistory& measured, const db::SoilRunRecord& record) {
-    const char* unit = measured.per_metre ? " kN/m" : " kN";
-    const char* impulse_unit = measured.per_metre ? " kN s/m" : " kN s";
-    auto kn = [](double newtons) { return report::fmt("%.2f", newtons / 1e3); };
-    out << "compared with the measured wall load in " << measured.source << " (" << c.points
-        << " points in t = " << report::fmt("%g", c.from) << " to " << report::fmt("%g", c.to)
-        << " s; simulated: the sampled load, " << report::filter_text(record)
-        << ", both linear between their points):\n"
-        << "  peak: simulated " << kn(c.simulated_peak) << unit << " at "
-        << report::fmt("%.2f", c.simulated_peak_time) << " s, measured " << kn(c.measured_peak)
-        << unit << " at " << report::fmt("%.2f", c.measured_peak_time)
-        << " s; simulated / measured " << report::fmt("%.3f", c.peak_ratio) << '\n'
-        << "  impulse: simulated " << kn(c.simulated_impulse) << impulse_unit << ", measured "
-        << kn(c.measured_impulse) << impulse_unit << "; simulated / measured "
-        << report::fmt("%.3f", c.impulse_ratio) << '\n'
-        << "  mean load up to the measured peak: simulated / measured "
-        << report::fmt("%.3f", c.loading_ratio) << '\n'
-        << "  mean load after the measured peak: simulated / measured "
-        << report::fmt("%.3f", c.after_peak_ratio) << '\n'
-        << "  RMS difference " << kn(c.rms_difference) << unit << " ("
-        << report::fmt("%.1f", 100.0 * c.rms_difference / c.measured_peak)
-        << " % of the measured peak)\n";
-}
-
-nlohmann::json comparison_json(const risk::HistoryComparison& c,
-                               const risk::LoadHistory& measured) {
-    const std::string u = measured.per_metre ? "_per_m" : "";
-    return {{"measured_file", measured.source},
-            {"points", c.points},
-            {"from_s", c.from},
-            {"to_s", c.to},
-            {"simulated_peak_N" + u, c.simulated_peak},
-            {"simulated_peak_time_s", c.simulated_peak_time},
-            {"measured_peak_N" + u, c.measured_peak},
-            {"measured_peak_time_s", c.measured_peak_time},
-            {"peak_ratio", report::json_number(c.peak_ratio)},
-            {"simulated_impulse_N_s" + u, c.simulated_impulse},
-            {"measured_impulse_N_s" + u, c.measured_impulse},
-            {"impulse_ratio", report::json_number(c.impulse_ratio)},
-            {"loading_ratio", report::json_number(c.loading_ratio)},
-            {"after_peak_ratio", report::json_number(c.after_peak_ratio)},
-            {"rms_difference_N" + u, c.rms_difference}};
-}
-
 void run_soil_command(const SoilArgs& args) {
     const scenario::SoilFile file = scenario::load_soil_scenario(args.scenario);
     // Read the measured record and refuse a mismatch (units, or no shared times) now rather
@@ -180,12 +133,14 @@ void run_soil_command(const SoilArgs& args) {
         nlohmann::json document = report::soil_json(record);
         document["scenario_file"] = args.scenario;
         if (!args.db.empty()) document["database"] = args.db;
-        if (comparison) document["measured_comparison"] = comparison_json(*comparison, *measured);
+        if (comparison)
+            document["measured_comparison"] =
+                report::measured_comparison_json(*comparison, *measured);
         std::cout << document.dump(2) << '\n';
         return;
     }
     report::print_soil_summary(std::cout, record, args.scenario);
-    if (comparison) print_comparison(std::cout, *comparison, *measured, record);
+    if (comparison) report::print_measured_comparison(std::cout, *comparison, *measured, record);
     if (!args.svg.empty()) std::cout << "wall-load figure written to " << args.svg << '\n';
     if (frames) std::cout << frames->count() << " VTK frames written to " << args.vtk_dir << '\n';
     if (!args.csv.empty()) std::cout << "wall-load history written to " << args.csv << '\n';

@@ -258,4 +258,48 @@ void write_soil_history(std::ostream& out, QueryFormat format, const std::string
     }
 }
 
+void print_measured_comparison(std::ostream& out, const risk::HistoryComparison& c,
+                               const risk::LoadHistory& measured, const db::SoilRunRecord& record) {
+    const char* unit = measured.per_metre ? " kN/m" : " kN";
+    const char* impulse_unit = measured.per_metre ? " kN s/m" : " kN s";
+    auto kn = [](double newtons) { return fmt("%.2f", newtons / 1e3); };
+    out << "compared with the measured wall load in " << measured.source << " (" << c.points
+        << " points in t = " << fmt("%g", c.from) << " to " << fmt("%g", c.to)
+        << " s; simulated: the sampled load, " << filter_text(record)
+        << ", both linear between their points):\n"
+        << "  peak: simulated " << kn(c.simulated_peak) << unit << " at "
+        << fmt("%.2f", c.simulated_peak_time) << " s, measured " << kn(c.measured_peak) << unit
+        << " at " << fmt("%.2f", c.measured_peak_time) << " s; simulated / measured "
+        << fmt("%.3f", c.peak_ratio) << '\n'
+        << "  impulse: simulated " << kn(c.simulated_impulse) << impulse_unit << ", measured "
+        << kn(c.measured_impulse) << impulse_unit << "; simulated / measured "
+        << fmt("%.3f", c.impulse_ratio) << '\n'
+        << "  mean load up to the measured peak: simulated / measured "
+        << fmt("%.3f", c.loading_ratio) << '\n'
+        << "  mean load after the measured peak: simulated / measured "
+        << fmt("%.3f", c.after_peak_ratio) << '\n'
+        << "  RMS difference " << kn(c.rms_difference) << unit << " ("
+        << fmt("%.1f", 100.0 * c.rms_difference / c.measured_peak) << " % of the measured peak)\n";
+}
+
+nlohmann::json measured_comparison_json(const risk::HistoryComparison& c,
+                                        const risk::LoadHistory& measured) {
+    const std::string u = measured.per_metre ? "_per_m" : "";
+    return {{"measured_file", measured.source},
+            {"points", c.points},
+            {"from_s", c.from},
+            {"to_s", c.to},
+            {"simulated_peak_N" + u, c.simulated_peak},
+            {"simulated_peak_time_s", c.simulated_peak_time},
+            {"measured_peak_N" + u, c.measured_peak},
+            {"measured_peak_time_s", c.measured_peak_time},
+            {"peak_ratio", json_number(c.peak_ratio)},
+            {"simulated_impulse_N_s" + u, c.simulated_impulse},
+            {"measured_impulse_N_s" + u, c.measured_impulse},
+            {"impulse_ratio", json_number(c.impulse_ratio)},
+            {"loading_ratio", json_number(c.loading_ratio)},
+            {"after_peak_ratio", json_number(c.after_peak_ratio)},
+            {"rms_difference_N" + u, c.rms_difference}};
+}
+
 }  // namespace rockfall::report

@@ -42,6 +42,17 @@ risk::LoadHistory sampled_load(const db::SoilRunRecord& record, bool filtered);
 /// over 0.05 s" or "unfiltered").
 std::string filter_text(const db::SoilRunRecord& record);
 
+/// The comparison of the run's filtered sampled load with a measured record
+/// (risk::compare_histories): peaks, impulses, mean loads before and after the measured peak
+/// and the RMS difference, in kN (kN/m in 2D), and the ratios simulated / measured.
+void print_measured_comparison(std::ostream& out, const risk::HistoryComparison& comparison,
+                               const risk::LoadHistory& measured, const db::SoilRunRecord& record);
+
+/// The same as JSON fields in N (N/m in 2D, keys ending in `_per_m`); a ratio without a
+/// measured denominator is null.
+nlohmann::json measured_comparison_json(const risk::HistoryComparison& comparison,
+                                        const risk::LoadHistory& measured);
+
 /// The wall-load figure of a run named `name`: sampled and filtered load and, when given, a
 /// measured record (load_history_plot).
 Plot soil_load_figure(const db::SoilRunRecord& record, const std::string& name,
