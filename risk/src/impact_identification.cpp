@@ -8,8 +8,7 @@
 
 namespace rockfall::risk {
 
-std::vector<ImpactRow> rows_of_shape(const std::vector<ImpactRow>& rows,
-                                      ImpactShape shape) {
+std::vector<ImpactRow> rows_of_shape(const std::vector<ImpactRow>& rows, ImpactShape shape) {
     std::vector<ImpactRow> out;
     std::copy_if(rows.begin(), rows.end(), std::back_inserter(out),
                  [&](const ImpactRow& r) { return r.shape == shape; });
@@ -21,8 +20,8 @@ std::string shape_counts(const std::vector<ImpactRow>& rows) {
     for (const ImpactShape shape : all_impact_shapes) {
         const std::size_t n = rows_of_shape(rows, shape).size();
         if (n > 0) {
-            out += (out.empty() ? "" : ", ") + std::string(to_string(shape)) + ' ' +
-                   std::to_string(n);
+            out +=
+                (out.empty() ? "" : ", ") + std::string(to_string(shape)) + ' ' + std::to_string(n);
         }
     }
     return out;
@@ -48,8 +47,8 @@ Identification identify_shapes(const std::vector<ImpactRow>& rows,
         const ImpactShape wanted = parse_impact_shape(*args.shape);
         const std::size_t n = rows_of_shape(rows, wanted).size();
         if (n < kMinFitRows) {
-            throw std::invalid_argument(source + " has " + std::to_string(n) +
-                                        " rows of shape " + *args.shape + ": a fit needs " +
+            throw std::invalid_argument(source + " has " + std::to_string(n) + " rows of shape " +
+                                        *args.shape + ": a fit needs " +
                                         std::to_string(kMinFitRows) +
                                         " (it has: " + shape_counts(rows) + ")");
         }
