@@ -16,10 +16,13 @@ double kinetic_energy(const RockState& state) {
 }  // namespace
 
 void LoadCell::record(double dt, const std::optional<WallForce>& force, const RockState& before,
-                      const RockState& after) {
+                      const RockState& after, bool holding) {
     assert(dt > 0.0);
     if (!force || force->normal <= 0.0) {
-        if (open_) {
+        if (open_ && holding) {
+            open_->history.push_back(ForceSample{after.time - dt, 0.0, 0.0});
+            open_->end_time = after.time;
+        } else if (open_) {
             close();
         }
         return;

@@ -17,6 +17,21 @@
 namespace rockfall::engine {
 namespace {
 
+// Approach speeds below this at first touch make a resting contact with the wall, m/s: the
+// wall law's own floor (WallContactLaw::kMinContactSpeed), below which it has no impact to
+// resolve.
+constexpr double kRestingContactSpeed = WallContactLaw::kMinContactSpeed;
+
+// A compliant contact that lasts this many times the duration of a free impact at its
+// first-touch speed is held against the wall (by the rocks behind it, or its own weight on a
+// wall leaning over it): a resting contact from then on.
+constexpr double kRestingContactDurations = 2.0;
+
+// Where a rock is in its run: moving (the run waits for it), at rest and kept in the world as
+// an obstacle until the run ends (it moves again if something pushes it), or gone (left the
+// domain, failed, time limit: out of the world).
+enum class Phase { moving, resting, gone };
+
 // Everything that belongs to one rock during a run.
 struct RockRun {
     RockRun(shapes::RockGeometry rock, int body_index, double rock_mass, const Vec3& rock_inertia,
@@ -36,7 +51,7 @@ struct RockRun {
     LoadCell load_cell;
     RockRecorder recorder;
     StopRule stop_rule;
-    bool active = true;
+    Phase phase = Phase::moving;
     // State after the last step (before the next one) and its gap above the surface.
     BodyState body_state;
     RockState state;
@@ -47,8 +62,14 @@ struct RockRun {
     // Whether the rock overlapped the wall before the last step: the contact's speed and step
     // are fixed at first touch, not again while the overlap lingers after the force vanished.
     bool touching = false;
-    // Fine step fixed at first touch for the whole contact.
+    // Fine step fixed at first touch for the whole contact, the contact's start time and how
+    // long a free impact at its first-touch speed would last, s.
     double contact_step = 0.0;
+    double contact_start = 0.0;
+    double contact_duration = 0.0;
+    // Whether Bullet's rigid contact holds the rock against the wall (a resting contact) rather
+    // than the compliant law (an impact).
+    bool rigid_wall = false;
     // Found deeper in the wall than half its size: it went through the contact.
     bool inside_wall = false;
 };
@@ -70,6 +91,10 @@ class Run {
     StepChoice step_size() const;
     void record(double dt);
     void stop(std::size_t index, StopReason reason);
+    void settle(std::size_t index);
+    void wake(std::size_t index);
+    void finalize(std::size_t index);
+    void make_rigid(RockRun& rock);
 
     const Scenario& scenario_;
     const shapes::Slope slope_;
@@ -77,7 +102,8 @@ class Run {
     std::vector<RockRun> rocks_;
     Outcome outcome_;
     double time_ = 0.0;
-    std::size_t active_count_ = 0;
+    // Rocks still moving: the run ends when none is.
+    std::size_t moving_count_ = 0;
 };
 
 Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options)
@@ -109,11 +135,11 @@ Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options
         rock.gap = surface_gap(slope_, rock.geometry, initial);
         rock.recorder.start(rock.state, rock.gap);
     }
-    active_count_ = rocks_.size();
+    moving_count_ = rocks_.size();
 }
 
 Outcome Run::execute() {
-    while (active_count_ > 0) {
+    while (moving_count_ > 0) {
         wall_contacts();
         const StepChoice step = step_size();
         // Phase 3: the physics step.
@@ -122,18 +148,24 @@ Outcome Run::execute() {
         ++(step.fine ? outcome_.fine_steps : outcome_.coarse_steps);
         record(step.dt);
     }
+    for (std::size_t i = 0; i < rocks_.size(); ++i) {
+        if (rocks_[i].phase == Phase::resting) {
+            finalize(i);
+        }
+    }
     outcome_.simulated_time = time_;
     outcome_.state_hash = state_hash(outcome_.rocks);
     return std::move(outcome_);
 }
 
 // Phase 1: the compliant wall contact of each rock that may touch the wall, applied as an
-// external force for the coming step (Bullet clears forces after each step).
+// external force for the coming step (Bullet clears forces after each step). A slow touch, or
+// a contact that outlasts an impact, becomes a resting contact that Bullet holds rigidly.
 void Run::wall_contacts() {
     const std::optional<shapes::OrientedBox>& wall = slope_.wall();
     for (RockRun& rock : rocks_) {
         rock.wall_force.reset();
-        if (!rock.active || !wall) {
+        if (rock.phase == Phase::gone || !wall || rock.rigid_wall) {
             continue;
         }
         const BodyState& s = rock.body_state;
@@ -156,71 +188,149 @@ void Run::wall_contacts() {
             s.velocity + s.angular_velocity.cross(overlap->point - s.position);
         if (first_touch) {
             const double normal_speed = std::max(0.0, -point_velocity.dot(overlap->normal));
+            if (normal_speed < kRestingContactSpeed) {
+                make_rigid(rock);
+                continue;
+            }
             rock.law->begin_contact(normal_speed);
             rock.contact_step =
                 fine_step(*rock.law, normal_speed, scenario_.wall_contact.steps_per_contact,
                           scenario_.numerics.time_step);
+            rock.contact_start = time_;
+            rock.contact_duration = rock.law->contact_duration(normal_speed);
+        } else if (time_ - rock.contact_start > kRestingContactDurations * rock.contact_duration) {
+            make_rigid(rock);
+            continue;
         }
         rock.wall_force = rock.law->force(*overlap, point_velocity);
         world_.apply_force(rock.body, rock.wall_force->force, rock.wall_force->point);
     }
 }
 
+void Run::make_rigid(RockRun& rock) {
+    rock.rigid_wall = true;
+    world_.set_rigid_wall_contact(rock.body, true);
+}
+
 // Phase 2: the coarse step, or the shortest step a rock near the wall needs: the contact's fine
-// step while touching, shrinking approach steps before.
+// step while an impact lasts, shrinking approach steps before. Resting contacts, and rocks
+// too slow to make an impact, take the coarse step.
 StepChoice Run::step_size() const {
     const double coarse = scenario_.numerics.time_step;
     const int steps_per_contact = scenario_.wall_contact.steps_per_contact;
     double dt = coarse;
     for (const RockRun& rock : rocks_) {
-        if (!rock.active || !rock.law) {
+        if (rock.phase == Phase::gone || !rock.law || rock.rigid_wall) {
             continue;
         }
-        const bool in_contact = rock.touching || rock.load_cell.in_contact();
-        dt = std::min(dt, in_contact
-                              ? rock.contact_step
-                              : approach_step(*rock.law, rock.approach, steps_per_contact, coarse));
+        if (rock.touching || rock.load_cell.in_contact()) {
+            dt = std::min(dt, rock.contact_step);
+        } else if (rock.approach.closing_speed >= kRestingContactSpeed) {
+            dt = std::min(dt, approach_step(*rock.law, rock.approach, steps_per_contact, coarse));
+        }
     }
     return {dt, dt < coarse};
+}
+
+// The wall force a resting contact applied during the last step, as the load cell reads a
+// compliant one: the constraint impulse over the step. Empty once Bullet holds no contact
+// point, which ends the resting contact.
+std::optional<WallForce> resting_wall_force(const RigidWallContact& contact, double dt) {
+    if (!contact.touching || contact.normal_impulse <= 0.0) {
+        return std::nullopt;
+    }
+    WallForce force;
+    force.force = contact.impulse / dt;
+    force.point = contact.point;
+    force.normal = contact.normal_impulse / dt;
+    force.normal_direction = contact.normal;
+    force.tangential = (force.force - force.normal * force.normal_direction).norm();
+    return force;
 }
 
 // Phase 4 (after the physics step): load cells, recorders and stop rules.
 void Run::record(double dt) {
     for (std::size_t i = 0; i < rocks_.size(); ++i) {
         RockRun& rock = rocks_[i];
-        if (!rock.active) {
+        if (rock.phase == Phase::gone) {
             continue;
         }
         const BodyState body = world_.state(rock.body);
         const RockState after = rock_state(body, time_, rock.mass, rock.inertia);
         const double gap = surface_gap(slope_, rock.geometry, body);
+        bool holding = false;
+        if (rock.rigid_wall) {
+            const RigidWallContact contact = world_.rigid_wall_contact(rock.body);
+            rock.wall_force = resting_wall_force(contact, dt);
+            holding = contact.touching;
+            if (!contact.touching) {
+                rock.rigid_wall = false;
+                rock.touching = false;
+                world_.set_rigid_wall_contact(rock.body, false);
+            }
+        }
         if (rock.wall_force || rock.load_cell.in_contact()) {
-            rock.load_cell.record(dt, rock.wall_force, rock.state, after);
+            rock.load_cell.record(dt, rock.wall_force, rock.state, after, holding);
         }
         rock.recorder.after_step(rock.state, rock.gap, after, gap);
         rock.body_state = body;
         rock.state = after;
         rock.gap = gap;
-        if (rock.inside_wall) {
-            stop(i, StopReason::numerical_failure);
-        } else if (const std::optional<StopReason> reason = rock.stop_rule.check(after, dt)) {
+        const std::optional<StopReason> reason =
+            rock.inside_wall ? StopReason::numerical_failure : rock.stop_rule.check(after, dt);
+        if (!reason) {
+            if (rock.phase == Phase::resting) {
+                wake(i);
+            }
+        } else if (*reason != StopReason::at_rest) {
             stop(i, *reason);
+        } else if (rock.phase == Phase::moving) {
+            settle(i);
         }
     }
 }
 
+// A moving rock comes to rest: its outcome says so, and it stays in the world.
+void Run::settle(std::size_t index) {
+    RockRun& rock = rocks_[index];
+    rock.phase = Phase::resting;
+    outcome_.rocks[index].stop = StopReason::at_rest;
+    outcome_.rocks[index].stop_time = time_;
+    world_.allow_sleep(rock.body, true, scenario_.numerics.rest_speed,
+                       rock.geometry.bounding_radius);
+    --moving_count_;
+}
+
+// A rock at rest is moving again (pushed or undermined): the run waits for it once more.
+void Run::wake(std::size_t index) {
+    RockRun& rock = rocks_[index];
+    rock.phase = Phase::moving;
+    world_.allow_sleep(rock.body, false, 0.0, 0.0);
+    ++moving_count_;
+}
+
+// The end of a rock's record: open wall hits close, reach and maxima are written.
+void Run::finalize(std::size_t index) {
+    RockRun& rock = rocks_[index];
+    RockOutcome& outcome = outcome_.rocks[index];
+    outcome.final_state = rock.state;
+    rock.load_cell.finish(rock.state);
+    outcome.wall_hits = rock.load_cell.hits();
+    rock.recorder.finish(rock.state, outcome);
+}
+
+// A moving rock leaves the run: out of the domain, failed or out of time.
 void Run::stop(std::size_t index, StopReason reason) {
     RockRun& rock = rocks_[index];
     RockOutcome& outcome = outcome_.rocks[index];
     outcome.stop = reason;
     outcome.stop_time = time_;
-    outcome.final_state = rock.state;
-    rock.load_cell.finish(rock.state);
-    outcome.wall_hits = rock.load_cell.hits();
-    rock.recorder.finish(rock.state, outcome);
+    finalize(index);
     world_.remove_rock(rock.body);
-    rock.active = false;
-    --active_count_;
+    if (rock.phase == Phase::moving) {
+        --moving_count_;
+    }
+    rock.phase = Phase::gone;
 }
 
 }  // namespace

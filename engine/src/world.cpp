@@ -34,11 +34,40 @@ const Material& material_of(const SurfaceMaterials& materials, shapes::SurfaceRo
             return materials.bars;
         case shapes::SurfaceRole::side_wall:
             return materials.side_walls;
-        case shapes::SurfaceRole::slope:
         case shapes::SurfaceRole::reaction_wall:
+            return materials.wall;
+        case shapes::SurfaceRole::slope:
             break;
     }
     return materials.slope;
+}
+
+// userIndex3 tags: the reaction wall, and a rock whose wall contact is rigid. A rock-wall pair
+// of any other rock gets no contact points (near_callback).
+constexpr int kWallTag = 1;
+constexpr int kRigidWallTag = 2;
+
+bool is_wall(const btCollisionObject* object) { return object->getUserIndex3() == kWallTag; }
+
+// Bullet's narrowphase for one pair, except that a rock touches the wall box only when its
+// wall contact is rigid; otherwise the pair's contact points are dropped, so the compliant
+// law alone acts.
+void near_callback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
+                   const btDispatcherInfo& info) {
+    const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+    const auto* b = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+    if (is_wall(a) || is_wall(b)) {
+        const btCollisionObject* rock = is_wall(a) ? b : a;
+        if (rock->getUserIndex3() != kRigidWallTag) {
+            if (pair.m_algorithm) {
+                btManifoldArray manifolds;
+                pair.m_algorithm->getAllContactManifolds(manifolds);
+                for (int i = 0; i < manifolds.size(); ++i) manifolds[i]->clearManifold();
+            }
+            return;
+        }
+    }
+    btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
 }
 
 struct StaticSolid {
@@ -70,6 +99,8 @@ struct World::Impl {
     // deque: the material records must keep their addresses (Bullet user pointers).
     std::deque<ContactMaterial> materials;
     std::vector<StaticSolid> statics;
+    // The reaction wall among the statics, if any.
+    const btRigidBody* wall = nullptr;
     // A mesh terrain replaces the slope slabs: its shape is shared with other worlds.
     std::shared_ptr<const TerrainShape> terrain_shape;
     std::unique_ptr<btRigidBody> terrain;
@@ -87,6 +118,7 @@ struct World::Impl {
               std::pair{CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE}}) {
             dispatcher.registerCollisionCreateFunc(a, b, &hull_contacts);
         }
+        dispatcher.setNearCallback(&near_callback);
     }
 
     // Bullet's default pools hold 4096 manifolds and algorithms, cleared at every world's
@@ -144,7 +176,7 @@ World::World(const Scenario& scenario, const shapes::Slope& slope)
     for (const shapes::OrientedBox& box : slope.solids()) {
         const bool replaced_by_terrain =
             box.role == shapes::SurfaceRole::slope && scenario.slope.terrain != nullptr;
-        if (box.role == shapes::SurfaceRole::reaction_wall || replaced_by_terrain) {
+        if (replaced_by_terrain) {
             continue;
         }
         StaticSolid solid;
@@ -154,6 +186,10 @@ World::World(const Scenario& scenario, const shapes::Slope& slope)
         solid.body->setWorldTransform(to_bt(box.rotation, box.center));
         attach_material(*solid.body, material_of(scenario.materials, box.role),
                         impl_->materials.emplace_back());
+        if (box.role == shapes::SurfaceRole::reaction_wall) {
+            solid.body->setUserIndex3(kWallTag);
+            impl_->wall = solid.body.get();
+        }
         impl_->world.addRigidBody(solid.body.get());
         impl_->statics.push_back(std::move(solid));
     }
@@ -210,6 +246,62 @@ void World::remove_rock(int rock) {
     assert(body.in_world);
     impl_->world.removeRigidBody(body.body.get());
     body.in_world = false;
+}
+
+void World::set_rigid_wall_contact(int rock, bool rigid) {
+    impl_->rocks[static_cast<std::size_t>(rock)].body->setUserIndex3(rigid ? kRigidWallTag : -1);
+}
+
+RigidWallContact World::rigid_wall_contact(int rock) const {
+    RigidWallContact out;
+    const btRigidBody* body = impl_->rocks[static_cast<std::size_t>(rock)].body.get();
+    if (!impl_->wall || body->getUserIndex3() != kRigidWallTag) {
+        return out;
+    }
+    btCollisionDispatcher& dispatcher = impl_->dispatcher;
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+        const btPersistentManifold* manifold = dispatcher.getInternalManifoldPointer()[m];
+        const bool rock_is_a = manifold->getBody0() == body && manifold->getBody1() == impl_->wall;
+        const bool rock_is_b = manifold->getBody1() == body && manifold->getBody0() == impl_->wall;
+        if (!rock_is_a && !rock_is_b) {
+            continue;
+        }
+        // Bullet's normal points from body B to body A; the impulse acts on A along it.
+        const double sign = rock_is_a ? 1.0 : -1.0;
+        for (int i = 0; i < manifold->getNumContacts(); ++i) {
+            const btManifoldPoint& point = manifold->getContactPoint(i);
+            out.touching = true;
+            // A point beyond the processing threshold (a separated one: no speculative
+            // contacts) was not solved this step and keeps the impulse of its last solve.
+            if (point.getDistance() > manifold->getContactProcessingThreshold()) {
+                continue;
+            }
+            const Vec3 normal = sign * to_eigen(point.m_normalWorldOnB);
+            const double normal_impulse = point.m_appliedImpulse;
+            out.impulse +=
+                normal_impulse * normal +
+                sign * (point.m_appliedImpulseLateral1 * to_eigen(point.m_lateralFrictionDir1) +
+                        point.m_appliedImpulseLateral2 * to_eigen(point.m_lateralFrictionDir2));
+            out.normal_impulse += normal_impulse;
+            out.point += normal_impulse * to_eigen(point.getPositionWorldOnB());
+            out.normal = normal;
+        }
+    }
+    if (out.normal_impulse > 0.0) {
+        out.point /= out.normal_impulse;
+    }
+    return out;
+}
+
+void World::allow_sleep(int rock, bool allow, double rest_speed, double radius) {
+    btRigidBody& body = *impl_->rocks[static_cast<std::size_t>(rock)].body;
+    if (!allow) {
+        body.forceActivationState(DISABLE_DEACTIVATION);
+        return;
+    }
+    body.forceActivationState(ACTIVE_TAG);
+    body.setDeactivationTime(0.0);
+    body.setSleepingThresholds(rest_speed, rest_speed / std::max(radius, 1e-6));
 }
 
 void World::apply_force(int rock, const Vec3& force, const Vec3& point) {

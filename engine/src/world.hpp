@@ -22,11 +22,26 @@ struct BodyState {
     Vec3 angular_velocity = Vec3::Zero();
 };
 
+// What the reaction wall's rigid contact did to one rock during the last step: the wall's
+// resting contacts (see World::set_rigid_wall_contact).
+struct RigidWallContact {
+    // Whether Bullet holds contact points between the rock and the wall.
+    bool touching = false;
+    // Impulse of the wall on the rock over the step, N s, world frame.
+    Vec3 impulse = Vec3::Zero();
+    // Its normal component (>= 0) along `normal`, the unit normal out of the wall, N s.
+    double normal_impulse = 0.0;
+    Vec3 normal = Vec3::Zero();
+    // Where it acted: the normal-impulse-weighted mean of the contact points, m.
+    Vec3 point = Vec3::Zero();
+};
+
 class World {
   public:
-    // Static solids: every box of the slope except the reaction wall, whose contact is the
-    // compliant WallContactLaw applied by the caller as an external force; with a terrain mesh,
-    // the mesh instead of the slope slabs.
+    // Static solids: every box of the slope, or with a terrain mesh the mesh instead of the
+    // slope slabs. The reaction wall is a solid too, but a rock collides with it only while
+    // its wall contact is rigid (set_rigid_wall_contact); otherwise the caller applies the
+    // compliant WallContactLaw as an external force.
     World(const Scenario& scenario, const shapes::Slope& slope);
     ~World();
     World(const World&) = delete;
@@ -37,6 +52,16 @@ class World {
                  const BodyState& initial);
     // Takes a rock out of the simulation; its last state stays readable.
     void remove_rock(int rock);
+
+    // Whether Bullet's rigid contact holds the rock against the wall (a resting contact), or
+    // the caller's compliant law (an impact; the default).
+    void set_rigid_wall_contact(int rock, bool rigid);
+    // The rigid wall contact of the last step (empty impulse when the contact is compliant).
+    RigidWallContact rigid_wall_contact(int rock) const;
+    // Lets Bullet put a rock to sleep with its island when it has stayed still (a rock at
+    // rest kept as an obstacle), or keeps it awake (a moving rock; the default). A sleeping
+    // rock wakes when a moving body touches it.
+    void allow_sleep(int rock, bool allow, double rest_speed, double radius);
 
     // Force (N) acting at a world point (m) during the next step only.
     void apply_force(int rock, const Vec3& force, const Vec3& point);

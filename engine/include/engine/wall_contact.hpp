@@ -172,9 +172,11 @@ class LoadCell {
   public:
     /// Records one step of length dt (s) ending at `after.time`; `force` is the force applied
     /// during that step, empty when the rock did not touch the wall; `before` and `after` are
-    /// the rock's states at the start and the end of the step.
+    /// the rock's states at the start and the end of the step. `holding`: the rock still
+    /// touches the wall in a resting contact, so a step without force (the rigid contact's
+    /// impulse can vanish for a step while the rock leans on it) keeps the event open.
     void record(double dt, const std::optional<WallForce>& force, const RockState& before,
-                const RockState& after);
+                const RockState& after, bool holding = false);
     /// Closes an open event (at the end of a run).
     void finish(const RockState& state);
     /// True while a hit is in progress.
