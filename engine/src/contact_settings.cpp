@@ -105,7 +105,7 @@ void configure_solver(btContactSolverInfo& info, const Numerics& numerics) {
     // Share of the penetration the split impulse removes per step.
     info.m_erp2 = 0.8;
     // Bounces below this normal speed are dropped (m/s).
-    info.m_restitutionVelocityThreshold = kRestitutionThreshold;
+    info.m_restitutionVelocityThreshold = numerics.restitution_threshold;
     // Two friction directions per contact: with one, a rolling contact (zero slip, so no
     // velocity to align with) gets an arbitrary direction and slips along the other.
     info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;

@@ -30,11 +30,6 @@ void install_material_combiners();
 // docs/scenarios.md, "Contact model").
 void configure_solver(btContactSolverInfo& info, const Numerics& numerics);
 
-// Impacts slower than this (normal approach speed at first touch, m/s) do not bounce: far
-// below any bounce that matters, above the g dt a resting contact gains per step (0.01 m/s at
-// 1 ms). A scenario key once app/ is free to change (issue 16).
-inline constexpr double kRestitutionThreshold = 0.05;
-
 // Collision margin of rock hulls and static boxes, m: Bullet's default 0.04 m would round
 // every edge of a 0.2 m rock by 4 cm (boxes) or inflate hulls by 4 cm.
 inline constexpr double kCollisionMargin = 0.001;

@@ -58,8 +58,8 @@ TEST_CASE("rolling resistance acts through an impact: the spin drops by mu_r r J
 
 namespace {
 
-// The engine's restitution threshold, m/s (engine/src/contact_settings.hpp, docs/scenarios.md).
-constexpr double kRestitutionThreshold = 0.05;
+// The scenario's default restitution threshold, m/s (numerics.restitution_threshold).
+const double kRestitutionThreshold = engine::Numerics{}.restitution_threshold;
 
 // Time at which a sphere dropped from h comes to rest under the engine's contact model: it
 // lands at v0 = sqrt(2 g h) and rebounds at e v while the impact speed v is at least the

@@ -122,9 +122,7 @@ TEST_CASE("a pile against the wall stays at rest without creep or energy gain",
     std::map<int, std::vector<RockState>> states;
     RunOptions options;
     options.trajectory_interval = 0.1;
-    options.trajectory = [&](int index, const RockState& state) {
-        states[index].push_back(state);
-    };
+    options.trajectory = [&](int index, const RockState& state) { states[index].push_back(state); };
     const Outcome outcome = simulate(scenario, 1, options);
     std::size_t on_wall = 0;
     for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
@@ -176,8 +174,8 @@ TEST_CASE("every wall hit of a cluster carries the momentum the rock lost",
     std::size_t hits = 0;
     for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
         const RockRelease& release = scenario.rocks[i];
-        const double mass = release.rock.density * std::numbers::pi / 6.0 *
-                            std::pow(release.rock.size, 3);
+        const double mass =
+            release.rock.density * std::numbers::pi / 6.0 * std::pow(release.rock.size, 3);
         for (const WallHit& hit : outcome.rocks[i].wall_hits) {
             if (hit.start_time > 0.5) continue;  // the flying hit, not what follows on the floor
             INFO("rock " << i << " hit at " << hit.start_time << " s");

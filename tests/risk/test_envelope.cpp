@@ -62,8 +62,12 @@ TEST_CASE("every impact is compared with its shape's formula", "[risk][envelope]
     CHECK(c.alpha == 1.0);
     CHECK(c.beta == 1.0);
     CHECK(c.lambda == 5e8);
-    CHECK_THROWS_WITH(envelope_coefficients(EnvelopeFormula{"jra"}, ImpactShape::sphere),
+    EnvelopeFormula no_lambda;
+    no_lambda.name = "jra";
+    CHECK_THROWS_WITH(envelope_coefficients(no_lambda, ImpactShape::sphere),
                       Contains("needs lambda"));
-    CHECK_THROWS_WITH(envelope_coefficients(EnvelopeFormula{"uni"}, ImpactShape::sphere),
+    EnvelopeFormula unknown;
+    unknown.name = "uni";
+    CHECK_THROWS_WITH(envelope_coefficients(unknown, ImpactShape::sphere),
                       Contains("must be seed or jra"));
 }

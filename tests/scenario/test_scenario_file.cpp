@@ -78,6 +78,7 @@ TEST_CASE("the seed slope sample loads with scenario A's values", "[scenario][sc
     CHECK(s.rocks[0].release.distance == 0.5);
     CHECK(s.stations == std::vector<double>{0.0, 4.0});
     CHECK(s.numerics.time_step == 1e-3);
+    CHECK(s.numerics.restitution_threshold == 0.05);
     CHECK(s.gravity == 9.81);
     // Without extends the text is the file as written, comments included.
     std::ifstream in(samples / "seed_slope.toml");
@@ -181,6 +182,7 @@ TEST_CASE("format_scenario reads back to an identical scenario", "[scenario][sce
     s.rocks.push_back(s.rocks[0]);
     s.rocks[1].release.lateral = -1.5;
     s.numerics.time_step = 1e-5;
+    s.numerics.restitution_threshold = 0.125;
     const rockfall::engine::Scenario back = rockfall::scenario::parse_scenario(
         rockfall::scenario::format_scenario(s), "formatted.toml");
     CHECK(back.name == s.name);
@@ -194,6 +196,7 @@ TEST_CASE("format_scenario reads back to an identical scenario", "[scenario][sce
     CHECK(back.rocks[0].release.random_orientation);
     CHECK(back.rocks[1].release.lateral == -1.5);
     CHECK(back.numerics.time_step == 1e-5);
+    CHECK(back.numerics.restitution_threshold == 0.125);
     CHECK(rockfall::scenario::format_scenario(back) == rockfall::scenario::format_scenario(s));
 }
 
@@ -374,6 +377,22 @@ TEST_CASE("scenarios built in code are held to the same rules", "[scenario][scen
         CHECK(std::string(error.what()) ==
               "slope.segments = []: must have at least one segment\n"
               "rocks = []: must have at least one rock");
+    }
+}
+
+TEST_CASE("the restitution threshold is a numerics key with its range",
+          "[scenario][scenario][errors]") {
+    const rockfall::engine::Scenario read = rockfall::scenario::parse_scenario(
+        "[numerics]\nrestitution_threshold = 0.2\n", "threshold.toml");
+    CHECK(read.numerics.restitution_threshold == 0.2);
+    try {
+        rockfall::scenario::parse_scenario("[numerics]\nrestitution_threshold = 0\n",
+                                           "threshold.toml");
+        FAIL("no error");
+    } catch (const ScenarioError& error) {
+        CHECK_THAT(error.what(),
+                   Catch::Matchers::Contains("numerics.restitution_threshold = 0 m/s: must be in "
+                                             "[0.001, 1]"));
     }
 }
 

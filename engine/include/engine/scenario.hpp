@@ -114,6 +114,10 @@ struct Numerics {
     double rest_speed = 0.02;
     /// ... for this long, s (> 0).
     double rest_duration = 0.5;
+    /// Impacts slower than this (normal approach speed at first touch) do not bounce, m/s, in
+    /// [0.001, 1]: far below any bounce that matters, above the g dt a resting contact gains
+    /// per step (0.01 m/s at 1 ms).
+    double restitution_threshold = 0.05;
     /// Solver iterations per step, in [1, 100].
     int solver_iterations = 10;
 };
