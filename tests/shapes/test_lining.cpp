@@ -1,3 +1,5 @@
+#include "flume.hpp"
+
 #include "shapes/lining.hpp"
 #include "shapes/slope.hpp"
 #include "shapes/terrain.hpp"
@@ -21,28 +23,15 @@ using rockfall::shapes::Bumps;
 using rockfall::shapes::PerforatedSheet;
 using rockfall::shapes::SheetMesh;
 using rockfall::shapes::Slope;
-using rockfall::shapes::SlopeSpec;
 using rockfall::shapes::Sphere;
 using rockfall::shapes::SphereLayer;
 using rockfall::shapes::Terrain;
 using rockfall::shapes::TriangleMesh;
 using rockfall::shapes::Vec3;
+using rockfall::shapes::test::deg;
+using rockfall::shapes::test::flume;
 
 namespace {
-
-double deg(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
-// Seed 001's flume: 1.82 m at `angle` then a horizontal section as long, 0.60 m wide, side
-// walls 0.30 m high; no bars, no reaction wall (not needed by the linings).
-Slope flume(double angle = 45.0) {
-    SlopeSpec spec;
-    spec.segments = {{1.82, angle}, {1.82, 0.0}};
-    spec.width = 0.60;
-    spec.side_walls.height = 0.30;
-    spec.bars.enabled = false;
-    spec.wall.enabled = false;
-    return Slope(spec);
-}
 
 // Distance from p to the slope's reference surface: the profile polyline in the x-z plane,
 // extruded along y.
