@@ -4,13 +4,17 @@
 ///
 /// The box stands on the first profile segment and is aligned with it: its floor is that
 /// segment's surface (raised by the lining's height), its walls are perpendicular to it, and
-/// its gate is the downslope face. Rocks are packed as their bounding spheres, so that no two
-/// rocks overlap in any orientation.
+/// its gate is the downslope face. Rocks are packed as their bounding spheres (no two rocks
+/// overlap in any orientation) or lying flat as their bounding boxes (denser for elongated
+/// rocks).
 
 #include "shapes/polyhedron.hpp"
 #include "shapes/slope.hpp"
 
+#include <Eigen/Core>
+
 #include <random>
+#include <string>
 #include <vector>
 
 namespace rockfall::shapes {
