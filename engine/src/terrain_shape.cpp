@@ -61,8 +61,10 @@ bool correct_internal_edges(btManifoldPoint& point, const btCollisionObjectWrapp
 
 }  // namespace
 
-TerrainShape::TerrainShape(const shapes::Terrain& terrain) {
-    const shapes::TriangleMesh& mesh = terrain.mesh();
+TerrainShape::TerrainShape(const shapes::Terrain& terrain)
+    : TerrainShape(terrain.mesh(), terrain.internal_edge_correction()) {}
+
+TerrainShape::TerrainShape(const shapes::TriangleMesh& mesh, bool internal_edge_correction) {
     vertices_.reserve(3 * mesh.vertices.size());
     for (const shapes::Vec3& v : mesh.vertices) {
         vertices_.insert(vertices_.end(), {v.x(), v.y(), v.z()});
@@ -87,7 +89,7 @@ TerrainShape::TerrainShape(const shapes::Terrain& terrain) {
     shape_ = std::make_unique<btBvhTriangleMeshShape>(mesh_.get(), true);
     // No margin: the surface is where the survey puts it (the rocks carry their own margin).
     shape_->setMargin(0.0);
-    if (terrain.internal_edge_correction()) {
+    if (internal_edge_correction) {
         info_ = std::make_unique<btTriangleInfoMap>();
         btGenerateInternalEdgeInfo(shape_.get(), info_.get());
     }

@@ -25,6 +25,8 @@ namespace rockfall::engine {
 class TerrainShape {
   public:
     explicit TerrainShape(const shapes::Terrain& terrain);
+    // Any static triangle mesh (a lining sheet), with or without the correction.
+    TerrainShape(const shapes::TriangleMesh& mesh, bool internal_edge_correction);
     ~TerrainShape();
     TerrainShape(const TerrainShape&) = delete;
     TerrainShape& operator=(const TerrainShape&) = delete;

@@ -6,6 +6,8 @@
 #include "hull_contacts.hpp"
 #include "terrain_shape.hpp"
 
+#include "shapes/lining.hpp"
+
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
@@ -104,6 +106,12 @@ struct World::Impl {
     // A mesh terrain replaces the slope slabs: its shape is shared with other worlds.
     std::shared_ptr<const TerrainShape> terrain_shape;
     std::unique_ptr<btRigidBody> terrain;
+    // A lining: its spheres as one compound of shared sphere shapes (one per radius), and its
+    // perforated sheet as a triangle mesh; static bodies with the slope's material.
+    std::vector<std::unique_ptr<btSphereShape>> lining_spheres;
+    std::unique_ptr<btCompoundShape> lining_compound;
+    std::unique_ptr<TerrainShape> lining_sheet;
+    std::vector<std::unique_ptr<btRigidBody>> lining_bodies;
     std::vector<RockBody> rocks;
     btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
 
@@ -144,13 +152,16 @@ struct World::Impl {
         if (terrain) {
             world.removeRigidBody(terrain.get());
         }
+        for (std::unique_ptr<btRigidBody>& body : lining_bodies) {
+            world.removeRigidBody(body.get());
+        }
     }
 
     // Bullet's default of 16384 broadphase handles is cleared at every world's construction;
-    // a run needs one per static solid and rock.
+    // a run needs one per static solid and rock, the terrain and two lining bodies.
     static unsigned short handle_count(const shapes::Slope& slope, std::size_t rock_count) {
         return static_cast<unsigned short>(
-            std::min<std::size_t>(16384, slope.solids().size() + rock_count + 2));
+            std::min<std::size_t>(16384, slope.solids().size() + rock_count + 4));
     }
 
     // Broadphase bounds: the slope's extent with room for rocks flying off it; objects beyond
@@ -195,6 +206,49 @@ World::World(const Scenario& scenario, const shapes::Slope& slope)
     }
     if (scenario.slope.terrain) {
         add_terrain(scenario);
+    }
+    if (scenario.slope.lining) {
+        add_lining(scenario, slope);
+    }
+}
+
+// The lining's static bodies: they take the slope's material, like the terrain.
+void World::add_lining(const Scenario& scenario, const shapes::Slope& slope) {
+    const shapes::Lining& lining = *scenario.slope.lining;
+    const auto add_body = [&](btCollisionShape& shape) {
+        const btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, &shape);
+        btRigidBody& body = *impl_->lining_bodies.emplace_back(std::make_unique<btRigidBody>(info));
+        attach_material(body, scenario.materials.slope, impl_->materials.emplace_back());
+        impl_->world.addRigidBody(&body);
+        return &body;
+    };
+    const std::vector<shapes::Sphere> spheres = shapes::lining_spheres(slope, lining);
+    if (!spheres.empty()) {
+        impl_->lining_compound =
+            std::make_unique<btCompoundShape>(true, static_cast<int>(spheres.size()));
+        for (const shapes::Sphere& sphere : spheres) {
+            auto same = [&](const std::unique_ptr<btSphereShape>& s) {
+                return s->getRadius() == sphere.radius;
+            };
+            auto found =
+                std::find_if(impl_->lining_spheres.begin(), impl_->lining_spheres.end(), same);
+            if (found == impl_->lining_spheres.end()) {
+                found = impl_->lining_spheres.insert(
+                    impl_->lining_spheres.end(), std::make_unique<btSphereShape>(sphere.radius));
+            }
+            btTransform place;
+            place.setIdentity();
+            place.setOrigin(to_bt(sphere.center));
+            impl_->lining_compound->addChildShape(place, found->get());
+        }
+        add_body(*impl_->lining_compound);
+    }
+    if (lining.sheet) {
+        // T-junctions between the sheet's cells leave some edges without a neighbour, so the
+        // internal-edge correction could not see them all: the sheet is used as triangles.
+        impl_->lining_sheet = std::make_unique<TerrainShape>(
+            shapes::perforated_sheet(slope, *lining.sheet).mesh, false);
+        add_body(impl_->lining_sheet->shape());
     }
 }
 

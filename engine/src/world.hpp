@@ -76,6 +76,7 @@ class World {
 
   private:
     void add_terrain(const Scenario& scenario);
+    void add_lining(const Scenario& scenario, const shapes::Slope& slope);
 
     struct Impl;
     std::unique_ptr<Impl> impl_;

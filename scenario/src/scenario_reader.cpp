@@ -1,5 +1,6 @@
 #include "scenario_reader.hpp"
 
+#include "scenario_lining.hpp"
 #include "scenario_rock_shape.hpp"
 #include "scenario_terrain.hpp"
 
@@ -214,17 +215,7 @@ void read_slope(TableReader& r, shapes::SlopeSpec& slope) {
                [&](TableReader& s) { read_fields(s, slope.side_walls, side_wall_fields); });
     with_table(r, "bars", [&](TableReader& s) {
         read_fields(s, slope.bars, bar_fields);
-        read_list(s, "segments", slope.bars.segments, "segment indices",
-                  [&](const toml::node& item, const std::string& path) -> std::optional<int> {
-                      const auto* index = item.as_integer();
-                      if (index != nullptr && index->get() >= std::numeric_limits<int>::min() &&
-                          index->get() <= std::numeric_limits<int>::max()) {
-                          return static_cast<int>(index->get());
-                      }
-                      s.context().report(item, path,
-                                         describe(item) + ": must be an integer segment index");
-                      return std::nullopt;
-                  });
+        read_segment_list(s, "segments", slope.bars.segments);
     });
     with_table(r, "wall", [&](TableReader& s) { read_fields(s, slope.wall, wall_fields); });
 }
@@ -242,8 +233,9 @@ engine::Scenario read_scenario(const toml::table& root, const std::string& file,
     read_fields(r, scenario, scenario_fields);
     with_table(r, "slope", [&](TableReader& s) {
         read_slope(s, scenario.slope);
-        // Not in read_slope: the soil solver has no terrain meshes.
+        // Not in read_slope: the soil solver has no terrain meshes or linings.
         read_terrain(s, scenario.slope);
+        read_lining(s, scenario.slope);
     });
     with_table(r, "materials", [&](TableReader& s) {
         read_material(s, "slope", scenario.materials.slope);

@@ -2,6 +2,7 @@
 // built in code are held to the same rules as files.
 
 #include "scenario/scenario_file.hpp"
+#include "scenario_lining.hpp"
 #include "scenario_schema.hpp"
 #include "scenario_terrain.hpp"
 
@@ -246,6 +247,7 @@ std::vector<ScenarioProblem> find_problems(const engine::Scenario& s, const Sour
     c.check_fields(s, "", scenario_fields);
     const bool profile_ok = check_slope(c, s.slope);
     check_terrain(c, s, profile_ok);
+    check_lining(c, s.slope, profile_ok);
     c.check_fields(s.materials.slope, "materials.slope", material_fields);
     c.check_fields(s.materials.bars, "materials.bars", material_fields);
     c.check_fields(s.materials.side_walls, "materials.side_walls", material_fields);

@@ -1,6 +1,7 @@
 // Scenario -> complete TOML document, in the order docs/scenarios.md documents the keys.
 
 #include "scenario/scenario_file.hpp"
+#include "scenario_lining.hpp"
 #include "scenario_schema.hpp"
 
 #include "shapes/terrain.hpp"
@@ -83,6 +84,27 @@ std::string format_scenario(const engine::Scenario& s) {
     w.list("segments", s.slope.bars.segments, [](int v) { return std::to_string(v); });
     w.header("slope.wall");
     w.fields(s.slope.wall, detail::wall_fields);
+    if (s.slope.lining) {
+        const shapes::Lining& lining = *s.slope.lining;
+        const auto segments = [&](const std::vector<int>& list) {
+            w.list("segments", list, [](int v) { return std::to_string(v); });
+        };
+        if (lining.spheres) {
+            w.header("slope.lining.spheres");
+            w.fields(*lining.spheres, detail::sphere_layer_fields);
+            segments(lining.spheres->segments);
+        }
+        if (lining.bumps) {
+            w.header("slope.lining.bumps");
+            w.fields(*lining.bumps, detail::bump_fields);
+            segments(lining.bumps->segments);
+        }
+        if (lining.sheet) {
+            w.header("slope.lining.sheet");
+            w.fields(*lining.sheet, detail::sheet_fields);
+            segments(lining.sheet->segments);
+        }
+    }
     if (s.slope.terrain) {
         // The mesh itself, placed and cleaned, so that the text stands alone.
         const shapes::Terrain& terrain = *s.slope.terrain;

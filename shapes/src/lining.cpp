@@ -83,4 +83,14 @@ std::vector<Sphere> bump_spheres(const Slope& slope, const Bumps& bumps) {
     return lattice_spheres(slope, bumps.segments, radius, h - radius, a, bumps.spacing, "bumps");
 }
 
+std::vector<Sphere> lining_spheres(const Slope& slope, const Lining& lining) {
+    std::vector<Sphere> out;
+    if (lining.spheres) out = sphere_layer(slope, *lining.spheres);
+    if (lining.bumps) {
+        const std::vector<Sphere> bumps = bump_spheres(slope, *lining.bumps);
+        out.insert(out.end(), bumps.begin(), bumps.end());
+    }
+    return out;
+}
+
 }  // namespace rockfall::shapes

@@ -1,6 +1,8 @@
 #include "scenario/scenario_file.hpp"
 #include "scenario_errors.hpp"
 
+#include "shapes/lining.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -393,6 +395,41 @@ TEST_CASE("the restitution threshold is a numerics key with its range",
         CHECK_THAT(error.what(),
                    Catch::Matchers::Contains("numerics.restitution_threshold = 0 m/s: must be in "
                                              "[0.001, 1]"));
+    }
+}
+
+TEST_CASE("a lining is read, checked and written back", "[scenario][scenario][lining]") {
+    const std::string text =
+        "stations = [0.5]\n[[slope.segments]]\nlength = 1.82\nangle_deg = 45.0\n"
+        "[[slope.segments]]\nlength = 1.82\nangle_deg = 0.0\n"
+        "[slope]\nwidth = 0.6\n[slope.bars]\nenabled = false\nsegments = []\n"
+        "[slope.wall]\ndistance_from_toe = 1.0\n"
+        "[slope.lining.spheres]\nradius = 0.008\nspacing = 0.016\nsegments = [0]\n"
+        "[slope.lining.sheet]\nsegments = [1]\n"
+        "[[rocks]]\nsize = 0.05\n";
+    const rockfall::engine::Scenario read = rockfall::scenario::parse_scenario(text, "lined.toml");
+    REQUIRE(read.slope.lining);
+    REQUIRE(read.slope.lining->spheres);
+    CHECK(read.slope.lining->spheres->radius == 0.008);
+    CHECK(read.slope.lining->spheres->segments == std::vector<int>{0});
+    REQUIRE(read.slope.lining->sheet);
+    CHECK(read.slope.lining->sheet->thickness == 0.0015);
+    CHECK(read.slope.lining->sheet->segments == std::vector<int>{1});
+    CHECK_FALSE(read.slope.lining->bumps);
+    const std::string formatted = rockfall::scenario::format_scenario(read);
+    const rockfall::engine::Scenario back =
+        rockfall::scenario::parse_scenario(formatted, "formatted.toml");
+    CHECK(rockfall::scenario::format_scenario(back) == formatted);
+
+    // The geometry's own rule: spheres closer than touching.
+    std::string bad = text;
+    bad.replace(bad.find("spacing = 0.016"), 15, "spacing = 0.010");
+    try {
+        rockfall::scenario::parse_scenario(bad, "lined.toml");
+        FAIL("no error");
+    } catch (const ScenarioError& error) {
+        CHECK_THAT(error.what(), Catch::Matchers::Contains("slope.lining.spheres"));
+        CHECK_THAT(error.what(), Catch::Matchers::Contains("spacing"));
     }
 }
 

@@ -16,6 +16,7 @@
 #include "shapes/slope.hpp"
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace rockfall::shapes {
@@ -75,6 +76,18 @@ struct PerforatedSheet {
 
 /// Largest number of spheres a sphere layer or bumps may have (4880 in seed 001's DEM).
 inline constexpr std::size_t max_lining_spheres = 1'000'000;
+
+/// The rough lining of a slope: any of the three kinds, each on its own segments (a segment
+/// may carry more than one). Static geometry for the rigid-body engine; the soil solver does
+/// not see it.
+struct Lining {
+    std::optional<SphereLayer> spheres;
+    std::optional<Bumps> bumps;
+    std::optional<PerforatedSheet> sheet;
+};
+
+/// The spheres of the sphere layer and of the bumps, together.
+std::vector<Sphere> lining_spheres(const Slope& slope, const Lining& lining);
 
 /// The spheres of a sphere layer: each touches its segment's surface (centre radius above it),
 /// its whole footprint (u in [radius, length - radius], |v| <= width / 2 - radius) lies on the

@@ -15,6 +15,7 @@
 namespace rockfall::shapes {
 
 class Terrain;
+struct Lining;
 
 /// One straight segment of the slope profile.
 struct SlopeSegment {
@@ -75,6 +76,8 @@ struct SlopeSpec {
     /// or null. The segments stay the reference profile (toe, stations, bars, walls); shared,
     /// as sweeps copy the scenario for every sample.
     std::shared_ptr<const Terrain> terrain;
+    /// A rough lining on some segments (shapes/lining.hpp), or null; shared like the terrain.
+    std::shared_ptr<const Lining> lining;
 };
 
 /// What a static solid is, for materials and for the wall load cell.
