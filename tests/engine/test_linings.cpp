@@ -38,11 +38,7 @@ Scenario flume(double angle_deg, shapes::RockKind kind, double size, const Mater
 // The rock's speed when its centre has travelled `distance` m down the slope from its start,
 // m/s (linear between samples), or -1 if it never got there.
 double speed_after(const Scenario& scenario, double distance) {
-    std::vector<RockState> states;
-    RunOptions options;
-    options.trajectory_interval = 1e-3;
-    options.trajectory = [&](int, const RockState& s) { states.push_back(s); };
-    simulate(scenario, 1, options);
+    const std::vector<RockState> states = trajectory(scenario, 1e-3);
     const Vec3 start = states.front().position;
     for (std::size_t i = 1; i < states.size(); ++i) {
         const double a = (states[i - 1].position - start).norm();
@@ -58,11 +54,7 @@ double speed_after(const Scenario& scenario, double distance) {
 // The rock's mean speed over its first `distance` m of travel, or until it stopped if it
 // stopped sooner (travel / time), m/s.
 double mean_speed(const Scenario& scenario, double distance) {
-    std::vector<RockState> states;
-    RunOptions options;
-    options.trajectory_interval = 1e-3;
-    options.trajectory = [&](int, const RockState& s) { states.push_back(s); };
-    simulate(scenario, 1, options);
+    const std::vector<RockState> states = trajectory(scenario, 1e-3);
     const Vec3 start = states.front().position;
     for (const RockState& s : states) {
         const double travel = (s.position - start).norm();
