@@ -1,5 +1,6 @@
 #include "engine/simulation.hpp"
 
+#include "cluster_release.hpp"
 #include "recorders.hpp"
 #include "release.hpp"
 #include "state_hash.hpp"
@@ -10,7 +11,10 @@
 #include "engine/wall_contact.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
+#include <cmath>
+#include <iterator>
 #include <optional>
 #include <vector>
 
@@ -95,6 +99,7 @@ class Run {
     void wake(std::size_t index);
     void finalize(std::size_t index);
     void make_rigid(RockRun& rock);
+    void settle_cluster(const Cluster& cluster);
 
     const Scenario& scenario_;
     const shapes::Slope slope_;
@@ -108,17 +113,35 @@ class Run {
 
 Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options)
     : scenario_(scenario), slope_(scenario.slope), world_(scenario, slope_) {
-    assert(!scenario.rocks.empty());
+    assert(!scenario.rocks.empty() || scenario.cluster);
     assert(options.trajectory_interval > 0.0);
     Random random(seed);
-    rocks_.reserve(scenario.rocks.size());
-    outcome_.rocks.resize(scenario.rocks.size());
-    for (std::size_t i = 0; i < scenario.rocks.size(); ++i) {
-        const RockRelease& spec = scenario.rocks[i];
-        shapes::RockGeometry geometry = spec.rock.geometry();
+    std::vector<PlacedRock> placed;
+    for (const RockRelease& spec : scenario.rocks) {
+        PlacedRock& rock = placed.emplace_back();
+        rock.spec = spec;
+        rock.geometry = spec.rock.geometry();
+        rock.initial = release_state(slope_, rock.geometry, spec.release, random);
+    }
+    if (scenario.cluster) {
+        std::vector<PlacedRock> cluster = cluster_rocks(slope_, *scenario.cluster, seed);
+        std::move(cluster.begin(), cluster.end(), std::back_inserter(placed));
+    }
+    std::vector<int> bodies;
+    for (const PlacedRock& rock : placed) {
+        bodies.push_back(world_.add_rock(rock.geometry, rock.spec.rock, rock.initial));
+    }
+    if (scenario.cluster) {
+        settle_cluster(*scenario.cluster);
+    }
+    rocks_.reserve(placed.size());
+    outcome_.rocks.resize(placed.size());
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+        const RockRelease& spec = placed[i].spec;
+        shapes::RockGeometry& geometry = placed[i].geometry;
+        const int body = bodies[i];
+        const BodyState initial = world_.state(body);
         const double rolling_radius = 0.5 * geometry.nominal_size;
-        const BodyState initial = release_state(slope_, geometry, spec.release, random);
-        const int body = world_.add_rock(geometry, spec.rock, initial);
         const double bounding_radius = geometry.bounding_radius;
         RockRun& rock = rocks_.emplace_back(
             std::move(geometry), body, world_.mass(body), world_.inertia(body),
@@ -136,6 +159,21 @@ Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options
         rock.recorder.start(rock.state, rock.gap);
     }
     moving_count_ = rocks_.size();
+}
+
+// Before t = 0: the packed cluster settles in its box, closed by a gate and a back wall, at the
+// coarse step; then the gate opens (the back wall stays, as the experiment's box did). Nothing
+// is recorded and the clock starts at the opening.
+void Run::settle_cluster(const Cluster& cluster) {
+    const std::array<shapes::OrientedBox, 2> walls = release_box_walls(slope_, cluster.box);
+    const int gate = world_.add_static_box(walls[0], scenario_.materials.side_walls);
+    world_.add_static_box(walls[1], scenario_.materials.side_walls);
+    const double dt = scenario_.numerics.time_step;
+    const auto steps = static_cast<long>(std::ceil(cluster.settle_time / dt));
+    for (long k = 0; k < steps; ++k) {
+        world_.step(dt);
+    }
+    world_.remove_static_box(gate);
 }
 
 Outcome Run::execute() {

@@ -85,6 +85,17 @@ struct RockBody {
     bool in_world = false;
 };
 
+// Rocks a run of the scenario will hold, for Bullet's pools: a cluster given by its volume
+// counts as a hundred rocks (more spill into the heap).
+std::size_t expected_rocks(const Scenario& scenario) {
+    std::size_t count = scenario.rocks.size();
+    if (scenario.cluster) {
+        const int drawn = scenario.cluster->grading.count;
+        count += drawn > 0 ? static_cast<std::size_t>(drawn) : 100;
+    }
+    return count;
+}
+
 }  // namespace
 
 // Members are declared in dependency order: Bullet's world is destroyed first, while the
@@ -101,6 +112,8 @@ struct World::Impl {
     // deque: the material records must keep their addresses (Bullet user pointers).
     std::deque<ContactMaterial> materials;
     std::vector<StaticSolid> statics;
+    // Static boxes added and removed during a run (release box walls); a removed one has no body.
+    std::vector<StaticSolid> temporary;
     // The reaction wall among the statics, if any.
     const btRigidBody* wall = nullptr;
     // A mesh terrain replaces the slope slabs: its shape is shared with other worlds.
@@ -149,6 +162,9 @@ struct World::Impl {
         for (StaticSolid& solid : statics) {
             world.removeRigidBody(solid.body.get());
         }
+        for (StaticSolid& solid : temporary) {
+            if (solid.body) world.removeRigidBody(solid.body.get());
+        }
         if (terrain) {
             world.removeRigidBody(terrain.get());
         }
@@ -158,10 +174,11 @@ struct World::Impl {
     }
 
     // Bullet's default of 16384 broadphase handles is cleared at every world's construction;
-    // a run needs one per static solid and rock, the terrain and two lining bodies.
+    // a run needs one per static solid and rock, the terrain, two lining bodies and the two
+    // walls of a release box.
     static unsigned short handle_count(const shapes::Slope& slope, std::size_t rock_count) {
         return static_cast<unsigned short>(
-            std::min<std::size_t>(16384, slope.solids().size() + rock_count + 4));
+            std::min<std::size_t>(16384, slope.solids().size() + rock_count + 6));
     }
 
     // Broadphase bounds: the slope's extent with room for rocks flying off it; objects beyond
@@ -177,7 +194,7 @@ struct World::Impl {
 };
 
 World::World(const Scenario& scenario, const shapes::Slope& slope)
-    : impl_(std::make_unique<Impl>(slope, scenario.rocks.size())) {
+    : impl_(std::make_unique<Impl>(slope, expected_rocks(scenario))) {
     install_material_combiners();
     impl_->world.setGravity(btVector3(0.0, 0.0, -scenario.gravity));
     configure_solver(impl_->world.getSolverInfo(), scenario.numerics);
@@ -300,6 +317,26 @@ void World::remove_rock(int rock) {
     assert(body.in_world);
     impl_->world.removeRigidBody(body.body.get());
     body.in_world = false;
+}
+
+int World::add_static_box(const shapes::OrientedBox& box, const Material& material) {
+    StaticSolid solid;
+    solid.shape = make_box_shape(box);
+    const btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, solid.shape.get());
+    solid.body = std::make_unique<btRigidBody>(info);
+    solid.body->setWorldTransform(to_bt(box.rotation, box.center));
+    attach_material(*solid.body, material, impl_->materials.emplace_back());
+    impl_->world.addRigidBody(solid.body.get());
+    impl_->temporary.push_back(std::move(solid));
+    return static_cast<int>(impl_->temporary.size()) - 1;
+}
+
+void World::remove_static_box(int box) {
+    StaticSolid& solid = impl_->temporary[static_cast<std::size_t>(box)];
+    if (solid.body) {
+        impl_->world.removeRigidBody(solid.body.get());
+        solid.body.reset();
+    }
 }
 
 void World::set_rigid_wall_contact(int rock, bool rigid) {

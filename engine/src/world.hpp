@@ -53,6 +53,11 @@ class World {
     // Takes a rock out of the simulation; its last state stays readable.
     void remove_rock(int rock);
 
+    // A temporary static box (the walls of a release box) with `material`; returns its index.
+    int add_static_box(const shapes::OrientedBox& box, const Material& material);
+    // Takes it out of the world.
+    void remove_static_box(int box);
+
     // Whether Bullet's rigid contact holds the rock against the wall (a resting contact), or
     // the caller's compliant law (an impact; the default).
     void set_rigid_wall_contact(int rock, bool rigid);

@@ -1,12 +1,15 @@
 #pragma once
 /// A validated rockfall scenario: plain structs with documented defaults, SI units.
 
+#include "shapes/grading.hpp"
+#include "shapes/release_box.hpp"
 #include "shapes/rocks.hpp"
 #include "shapes/slope.hpp"
 
 #include <Eigen/Core>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -122,6 +125,20 @@ struct Numerics {
     int solver_iterations = 10;
 };
 
+/// A cluster of rocks released together from a box (seed 001): sizes drawn from a grain-size
+/// distribution by the run's seed, packed in the release box, settled there behind a closed
+/// gate, then released at t = 0 when the gate opens. Its rocks follow `rocks` in the outcome.
+struct Cluster {
+    /// Grain sizes (volume-equivalent diameters) and their number or solid volume.
+    shapes::Grading grading;
+    /// Family, density and material of every cluster rock; its size is the drawn one.
+    RockSpec rock;
+    /// The box at the top of the first segment.
+    shapes::ReleaseBox box;
+    /// Time the packed rocks settle in the closed box before the gate opens, s (> 0).
+    double settle_time = 1.0;
+};
+
 /// Everything one simulation needs.
 struct Scenario {
     /// Free-text name, echoed in outputs.
@@ -132,8 +149,10 @@ struct Scenario {
     SurfaceMaterials materials;
     /// Compliant contact at the reaction wall.
     WallContact wall_contact;
-    /// Rocks released together (at least one).
+    /// Rocks released together (at least one, or a cluster).
     std::vector<RockRelease> rocks = {RockRelease{}};
+    /// A cluster released with them, or none.
+    std::optional<Cluster> cluster;
     /// Horizontal distances from the toe where stations record crossings, m (seed: 0 and 4).
     std::vector<double> stations = {0.0, 4.0};
     /// Stepping and stop rule.
