@@ -89,6 +89,12 @@ std::optional<risk::UntilRule> parse_until(const SweepArgs& args) {
 
 // The spec as run: the file's [sweep] table with the command line's overrides.
 risk::SweepSpec effective_spec(const scenario::ScenarioFile& file, const SweepArgs& args) {
+    if (file.scenario.rocks.empty()) {
+        throw std::invalid_argument(file.path.string() +
+                                    ": a sweep varies the scenario's first [[rocks]] entry, and "
+                                    "this scenario has only a [cluster]; sweeps over clusters "
+                                    "are not supported yet (run it with `rockfall simulate`)");
+    }
     risk::SweepSpec spec = file.has_sweep ? file.sweep : risk::sweep_defaults(file.scenario);
     if (args.samples) spec.samples = *args.samples;
     if (args.seed) spec.seed = *args.seed;

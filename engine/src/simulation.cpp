@@ -157,6 +157,7 @@ Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options
         rock.state = rock_state(initial, 0.0, rock.mass, rock.inertia);
         rock.gap = surface_gap(slope_, rock.geometry, initial);
         rock.recorder.start(rock.state, rock.gap);
+        outcome_.rocks[i].size = spec.rock.size;
     }
     moving_count_ = rocks_.size();
 }

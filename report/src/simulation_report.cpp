@@ -63,16 +63,24 @@ void print_hits(std::ostream& out, const engine::RockOutcome& rock) {
     }
 }
 
+// The rock as simulated: the scenario's, or a cluster rock with its drawn size.
+engine::RockSpec rock_spec(const engine::Scenario& scenario, const engine::RockOutcome& rock,
+                           std::size_t index) {
+    if (index < scenario.rocks.size()) return scenario.rocks[index].rock;
+    engine::RockSpec spec = scenario.cluster->rock;
+    spec.size = rock.size;
+    return spec;
+}
+
 }  // namespace
 
 void print_summary(std::ostream& out, const engine::Scenario& scenario,
                    const engine::Outcome& outcome, const RunInfo& info) {
     out << "scenario " << scenario.name << " (" << info.scenario_path << "), seed " << info.seed
-        << ", " << scenario.rocks.size() << (scenario.rocks.size() == 1 ? " rock" : " rocks")
-        << '\n';
+        << ", " << outcome.rocks.size() << (outcome.rocks.size() == 1 ? " rock" : " rocks") << '\n';
     for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
-        const auto& spec = scenario.rocks[i].rock;
         const auto& rock = outcome.rocks[i];
+        const engine::RockSpec spec = rock_spec(scenario, rock, i);
         out << "rock " << i + 1 << ": " << rock_label(spec) << ' ' << fmt("%.3f m", spec.size)
             << ", " << fmt("%.0f kg/m3", spec.density) << ", " << fmt("%.2f kg", rock_mass(spec))
             << '\n';
@@ -97,8 +105,8 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
                             const RunInfo& info) {
     nlohmann::json rocks = nlohmann::json::array();
     for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
-        const auto& spec = scenario.rocks[i].rock;
         const auto& rock = outcome.rocks[i];
+        const engine::RockSpec spec = rock_spec(scenario, rock, i);
         nlohmann::json stations = nlohmann::json::array();
         for (const auto& s : rock.stations) {
             stations.push_back({{"distance_from_toe_m", s.distance_from_toe},

@@ -173,7 +173,9 @@ Parsed parse(std::string_view text, const std::string& source, const fs::path& b
     // The sweep's defaults and checks need a valid base; its keys are read in any case, so that
     // their problems come with the base's.
     const bool base_valid = problems.empty();
-    if (base_valid) parsed.sweep = risk::sweep_defaults(parsed.scenario);
+    if (base_valid && !parsed.scenario.rocks.empty()) {
+        parsed.sweep = risk::sweep_defaults(parsed.scenario);
+    }
     if (const toml::node* sweep = root.get("sweep")) {
         parsed.has_sweep = true;
         detail::Context context{source, sources, problems};

@@ -1,5 +1,6 @@
 #include "scenario_reader.hpp"
 
+#include "scenario_cluster.hpp"
 #include "scenario_lining.hpp"
 #include "scenario_rock_shape.hpp"
 #include "scenario_terrain.hpp"
@@ -249,6 +250,7 @@ engine::Scenario read_scenario(const toml::table& root, const std::string& file,
     with_table_array(r, "rocks", scenario.rocks, [&](TableReader& s, engine::RockRelease& rock) {
         read_rock(s, rock, shape_cache);
     });
+    read_cluster(r, scenario, r.contains("rocks"));
     read_list(r, "stations", scenario.stations, "distances (m)",
               [&](const toml::node& item, const std::string& path) -> std::optional<double> {
                   if (std::optional<double> value = number_of(item)) return value;

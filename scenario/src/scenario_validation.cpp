@@ -2,6 +2,7 @@
 // built in code are held to the same rules as files.
 
 #include "scenario/scenario_file.hpp"
+#include "scenario_cluster.hpp"
 #include "scenario_lining.hpp"
 #include "scenario_schema.hpp"
 #include "scenario_terrain.hpp"
@@ -253,7 +254,10 @@ std::vector<ScenarioProblem> find_problems(const engine::Scenario& s, const Sour
     c.check_fields(s.materials.side_walls, "materials.side_walls", material_fields);
     c.check_fields(s.materials.wall, "materials.wall", material_fields);
     c.check_fields(s.wall_contact, "wall_contact", wall_contact_fields);
-    if (s.rocks.empty()) c.fail("rocks", "[]", "must have at least one rock");
+    if (s.rocks.empty() && !s.cluster) {
+        c.fail("rocks", "[]", "must have at least one rock (or a [cluster])");
+    }
+    check_cluster(c, s, profile_ok);
     for (std::size_t i = 0; i < s.rocks.size(); ++i) check_rock(c, s, i, profile_ok);
     for (std::size_t i = 0; i < s.stations.size(); ++i) {
         const std::string path = indexed("stations", i);

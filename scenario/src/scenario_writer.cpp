@@ -1,6 +1,7 @@
 // Scenario -> complete TOML document, in the order docs/scenarios.md documents the keys.
 
 #include "scenario/scenario_file.hpp"
+#include "scenario_cluster.hpp"
 #include "scenario_lining.hpp"
 #include "scenario_schema.hpp"
 
@@ -156,6 +157,19 @@ std::string format_scenario(const engine::Scenario& s) {
         w.fields(rock.rock.material, detail::material_fields);
         w.header("rocks.release");
         w.fields(rock.release, detail::release_fields);
+    }
+
+    if (s.cluster) {
+        const engine::Cluster& cluster = *s.cluster;
+        w.header("cluster");
+        w.line("kind", toml_string(shapes::to_string(cluster.rock.kind)));
+        w.line("density", value_text(cluster.rock.density));
+        w.fields(cluster.grading, detail::grading_fields);
+        w.fields(cluster, detail::cluster_fields);
+        w.header("cluster.material");
+        w.fields(cluster.rock.material, detail::material_fields);
+        w.header("cluster.box");
+        w.fields(cluster.box, detail::release_box_fields);
     }
 
     w.header("numerics");

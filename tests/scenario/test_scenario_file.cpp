@@ -378,7 +378,7 @@ TEST_CASE("scenarios built in code are held to the same rules", "[scenario][scen
     } catch (const ScenarioError& error) {
         CHECK(std::string(error.what()) ==
               "slope.segments = []: must have at least one segment\n"
-              "rocks = []: must have at least one rock");
+              "rocks = []: must have at least one rock (or a [cluster])");
     }
 }
 

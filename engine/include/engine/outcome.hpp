@@ -104,6 +104,9 @@ struct WallHit {
 
 /// Outcome for one rock.
 struct RockOutcome {
+    /// Nominal size (volume-equivalent diameter) of the rock as simulated, m: the scenario's, or
+    /// the size a cluster rock was drawn with.
+    double size = 0.0;
     /// Why its simulation ended.
     StopReason stop = StopReason::time_limit;
     /// Simulated time at the stop, s.

@@ -1,0 +1,50 @@
+#pragma once
+// A cluster in scenario files: the [cluster] table with its grading, rock family, density,
+// settle time, [cluster.material] and [cluster.box] (docs/clusters.md, "Clusters in scenario
+// files").
+
+#include "scenario_reader.hpp"
+#include "scenario_schema.hpp"
+
+#include "engine/scenario.hpp"
+#include "shapes/grading.hpp"
+#include "shapes/release_box.hpp"
+
+#include <array>
+#include <string_view>
+
+namespace rockfall::scenario::detail {
+
+inline const Fields<shapes::Grading, 6> grading_fields{{
+    {"count", &shapes::Grading::count, "", closed(0, shapes::max_cluster_rocks)},
+    {"total_volume", &shapes::Grading::total_volume, "m3", non_negative()},
+    {"d50", &shapes::Grading::d50, "m", positive()},
+    {"cu", &shapes::Grading::cu, "", closed(1.0, 20.0)},
+    {"d_min", &shapes::Grading::d_min, "m", closed(0.01, 10.0)},
+    {"d_max", &shapes::Grading::d_max, "m", closed(0.01, 10.0)},
+}};
+
+inline const Fields<engine::Cluster, 1> cluster_fields{{
+    {"settle_time", &engine::Cluster::settle_time, "s", closed(0.01, 10.0)},
+}};
+
+inline const Fields<shapes::ReleaseBox, 5> release_box_fields{{
+    {"start", &shapes::ReleaseBox::start, "m", non_negative()},
+    {"length", &shapes::ReleaseBox::length, "m", positive()},
+    {"width", &shapes::ReleaseBox::width, "m", positive()},
+    {"height", &shapes::ReleaseBox::height, "m", positive()},
+    {"floor", &shapes::ReleaseBox::floor, "m", non_negative()},
+}};
+
+// The families a cluster's rocks may take (a custom hull has no size to draw).
+inline constexpr std::array<shapes::RockKind, 3> cluster_kinds = {
+    shapes::RockKind::sphere, shapes::RockKind::massive, shapes::RockKind::planar};
+
+// Reads [cluster] from the root table, if present. A scenario with a cluster and no [[rocks]]
+// has no other rocks (not the default one).
+void read_cluster(TableReader& root, engine::Scenario& scenario, bool has_rocks);
+
+// The cluster's ranges, its grading's rules and its box against the slope.
+void check_cluster(Checker& c, const engine::Scenario& scenario, bool profile_ok);
+
+}  // namespace rockfall::scenario::detail
