@@ -8,10 +8,11 @@
 
 namespace rockfall::app {
 
-/// A CLI11 transform (Option::transform; check() would not keep the rewrite) that checks that the value is a decimal integer in [min, max] (`what` names it in the
-/// error, e.g. "a seed"). It rewrites an accepted value in plain decimal, so that CLI11's own
-/// conversion (strtoull with base 0, which reads "010" as octal, "0x10" as hex, wraps "-1" to
-/// 2^64 - 1 and clamps an overflow) reads the number that was checked.
+/// A CLI11 transform (for Option::transform: check() would drop the rewrite) that accepts a
+/// decimal integer in [min, max] (`what` names it in the error, e.g. "a seed") and rewrites it
+/// in plain decimal, so that CLI11's own conversion (strtoull with base 0, which reads "010" as
+/// octal, "0x10" as hex, wraps "-1" to 2^64 - 1 and clamps an overflow) reads the number that
+/// was checked.
 CLI::Validator integer_in(std::uint64_t min, std::uint64_t max, const std::string& what);
 
 /// Adds the seed rule (a decimal integer in [0, 2^64 - 1]) to the `--seed` option of every
