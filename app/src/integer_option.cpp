@@ -14,10 +14,9 @@ CLI::Validator integer_in(std::uint64_t min, std::uint64_t max, const std::strin
         [min, max, what, range](std::string& value) -> std::string {
             const std::string expected =
                 ": " + what + " must be a whole number in " + range + ", written in decimal";
-            const bool digits =
-                !value.empty() && value.size() <= 20 &&
-                std::all_of(value.begin(), value.end(),
-                            [](unsigned char c) { return std::isdigit(c) != 0; });
+            const bool digits = !value.empty() && value.size() <= 20 &&
+                                std::all_of(value.begin(), value.end(),
+                                            [](unsigned char c) { return std::isdigit(c) != 0; });
             std::uint64_t number = 0;
             if (!digits) return value + expected;
             const auto [end, error] =

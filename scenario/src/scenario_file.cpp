@@ -146,8 +146,8 @@ toml::table resolve_extends_at(toml::table table, const std::string& source,
     const std::string base_source = base_path.string();
     toml::table base = parse_toml(read_text(base_path, where.file, where.line), base_source);
     chain.push_back(identity);
-    base = resolve_extends_at(std::move(base), base_source, base_path.parent_path(), chain,
-                              depth + 1);
+    base =
+        resolve_extends_at(std::move(base), base_source, base_path.parent_path(), chain, depth + 1);
     chain.pop_back();
     table.erase("extends");
     merge(base, std::move(table));
