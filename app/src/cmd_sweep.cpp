@@ -2,6 +2,7 @@
 // database, on all cores, resumable, with an optional confidence-interval stop rule.
 
 #include "commands.hpp"
+#include "integer_option.hpp"
 #include "progress.hpp"
 #include "report/query_report.hpp"
 #include "report/text_format.hpp"
@@ -255,7 +256,7 @@ void register_sweep(CLI::App& app) {
         ->required();
     cmd->add_option("--samples", args->samples,
                     "Number of samples (with --until: the most to run); default: [sweep] samples")
-        ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40));
+        ->transform(integer_in(1, risk::max_samples, "a sample count"));
     cmd->add_option("--seed", args->seed, "Run seed; default: [sweep] seed");
     cmd->add_option("--method", args->method, "Sampling method; default: [sweep] method")
         ->check(CLI::IsMember({"monte_carlo", "mc", "latin_hypercube", "lhs"}));

@@ -3,6 +3,8 @@
 # - Every command with --seed refuses a negative, an overflowing, a hex and a blank-padded seed
 #   with exit 2 and a message naming --seed and the range [0, 2^64 - 1]; a sweep writes nothing.
 # - A seed with leading zeros is read in decimal (010 is 10, not octal 8); 2^64 - 1 is accepted.
+# - --samples out of [1, 10^8] is refused naming --samples; the file's sweep.samples, naming the
+#   key with its file and line.
 set -euo pipefail
 rockfall=$1 scenario=$2 sweep=$3 work=$4
 rm -rf "$work" && mkdir -p "$work"
@@ -33,3 +35,23 @@ echo "every --seed refused the bad values with the range"
 "$rockfall" simulate "$scenario" --seed 18446744073709551615 | grep -q ", seed 18446744073709551615, " ||
     { echo "--seed 2^64 - 1 should be accepted"; exit 1; }
 echo "--seed 010 is 10 and 2^64 - 1 is accepted"
+
+for value in 0 100000001 1099511627776 -1 99999999999999999999; do
+    set +e
+    out=$("$rockfall" sweep "$sweep" --db "$work/never.db" --quiet --samples "$value" 2>&1)
+    code=$?
+    set -e
+    [ "$code" -eq 2 ] &&
+        grep -Eq -- "^--samples: $value( is out of range)?: a sample count must be a whole number in \[1, 100000000\]" <<<"$out" &&
+        ! grep -q "sweep.samples" <<<"$out" ||
+        { echo "--samples $value: expected exit 2 naming --samples, got $code: $out"; exit 1; }
+    [ ! -e "$work/never.db" ] || { echo "a refused --samples left $work/never.db"; exit 1; }
+done
+printf 'extends = "%s"\n[sweep]\nsamples = 100000001\n' "$(realpath "$sweep")" >"$work/huge.toml"
+set +e
+out=$("$rockfall" sweep "$work/huge.toml" --db "$work/never.db" --quiet 2>&1)
+code=$?
+set -e
+[ "$code" -eq 2 ] && grep -q "sweep.samples = 100000001: must be in \[1, 100000000\], the most one sweep plans (.*huge.toml:3)" <<<"$out" ||
+    { echo "sweep.samples = 100000001: expected exit 2 naming the key, got $code: $out"; exit 1; }
+echo "--samples out of range names --samples, the file's key names sweep.samples"
