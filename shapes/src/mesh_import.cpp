@@ -91,6 +91,46 @@ void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& pa
     }
 }
 
+// assimp's readers can leave a scene its own post-processing asserts on (Debian builds assimp
+// with assertions, which abort): an OFF file that declares more faces than it holds gets faces
+// without corners, and a face or node may name an index past the end. Its validation step
+// would also refuse point clouds (meshes without faces), so the structure is checked here.
+void check_structure(const fs::path& file, const aiScene& scene) {
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& mesh = *scene.mMeshes[m];
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            const std::string which = "face " + std::to_string(f + 1) + " of mesh " +
+                                      std::to_string(m + 1) + " (counting from 1)";
+            if (face.mNumIndices == 0) {
+                fail(file, which +
+                               " has no corners: the file lists fewer faces than it declares, "
+                               "or a face line is broken");
+            }
+            for (unsigned k = 0; k < face.mNumIndices; ++k) {
+                if (face.mIndices[k] >= mesh.mNumVertices) {
+                    fail(file, which + " names vertex " + std::to_string(face.mIndices[k]) +
+                                   " of a mesh with " + std::to_string(mesh.mNumVertices) +
+                                   " vertices (numbered from 0)");
+                }
+            }
+        }
+    }
+    std::vector<const aiNode*> nodes;
+    if (scene.mRootNode != nullptr) nodes.push_back(scene.mRootNode);
+    while (!nodes.empty()) {
+        const aiNode& node = *nodes.back();
+        nodes.pop_back();
+        for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+            if (node.mMeshes[i] >= scene.mNumMeshes) {
+                fail(file, "a node names mesh " + std::to_string(node.mMeshes[i]) + " of " +
+                               std::to_string(scene.mNumMeshes));
+            }
+        }
+        for (unsigned i = 0; i < node.mNumChildren; ++i) nodes.push_back(node.mChildren[i]);
+    }
+}
+
 bool has_polygons(const aiScene& scene) {
     for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
         if ((scene.mMeshes[i]->mPrimitiveTypes & aiPrimitiveType_POLYGON) != 0) return true;
@@ -118,6 +158,7 @@ std::vector<Vec3> import_mesh(const fs::path& file, std::vector<std::array<int, 
     if (scene == nullptr) {
         fail(file, "cannot be read as " + lower_extension(file) + ": " + importer.GetErrorString());
     }
+    check_structure(file, *scene);
     // Faces of more than three corners (quads of a survey grid) become triangles; only files
     // that have such faces go through the step, so point clouds still reach our own checks.
     if (triangles != nullptr && has_polygons(*scene)) {
