@@ -6,7 +6,9 @@
 #include "shapes/rocks.hpp"
 
 #include <Eigen/Geometry>
+#include <assimp/BaseImporter.h>
 #include <assimp/Importer.hpp>
+#include <assimp/importerdesc.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -131,6 +133,28 @@ void check_structure(const fs::path& file, const aiScene& scene) {
     }
 }
 
+// assimp picks its importer by the extension; when several claim it (.gltf and .glb: glTF 1
+// and glTF 2) it asks each whether the contents are theirs, and when none does it tries every
+// importer it has on the contents: a broken .gltf then went to the OpenGEX importer, which
+// crashed on it (found by fuzz_mesh_gltf). A file no importer of its extension recognises is
+// refused here instead; with one importer assimp uses it without asking, and never falls back.
+void check_importer(const fs::path& file, const Assimp::Importer& importer) {
+    const std::string extension = lower_extension(file).substr(1);
+    std::vector<Assimp::BaseImporter*> claims;
+    for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+        std::istringstream extensions(importer.GetImporterInfo(i)->mFileExtensions);
+        for (std::string claimed; extensions >> claimed;) {
+            if (claimed == extension) claims.push_back(importer.GetImporter(i));
+        }
+    }
+    if (claims.size() <= 1) return;
+    for (Assimp::BaseImporter* candidate : claims) {
+        if (candidate->CanRead(file.string(), importer.GetIOHandler(), true)) return;
+    }
+    fail(file, "cannot be read as ." + extension + ": none of assimp's ." + extension +
+                   " readers recognises its contents");
+}
+
 bool has_polygons(const aiScene& scene) {
     for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
         if ((scene.mMeshes[i]->mPrimitiveTypes & aiPrimitiveType_POLYGON) != 0) return true;
@@ -154,6 +178,7 @@ std::vector<Vec3> import_mesh(const fs::path& file, std::vector<std::array<int, 
     // No post-processing on reading: a hull needs only the vertices, and assimp's steps reject
     // point clouds (meshes without faces). assimp logs nothing unless a logger is created.
     Assimp::Importer importer;
+    check_importer(file, importer);
     const aiScene* scene = importer.ReadFile(file.string(), 0);
     if (scene == nullptr) {
         fail(file, "cannot be read as " + lower_extension(file) + ": " + importer.GetErrorString());
