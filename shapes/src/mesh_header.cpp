@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -83,24 +84,30 @@ std::string shown(const std::string& line) {
     return "\"" + (line.size() > 60 ? line.substr(0, 60) + "..." : line) + "\"";
 }
 
-// The data of a PLY file walked entry by entry, as a reader does, to check every list count
+// The largest count a list's count type holds (1 to 4 bytes, signed or not).
+std::uint64_t largest_count(const PlyProperty& list) {
+    return (std::uint64_t{1} << (8 * list.count_bytes - (list.count_signed ? 1 : 0))) - 1;
+}
+
+// The data of a PLY file walked entry by entry, as assimp reads them, to check every list count
 // before assimp sizes a list by it: a count must fit its type (a uchar count is at most 255)
-// and the items it announces must follow in the file. A count of 10^12 in an ASCII file made
-// assimp take 22 GB of memory. Values themselves are left to assimp.
+// and the items it announces must follow, in a binary file in the bytes left, in an ASCII
+// file on the entry's own line (assimp reads one entry a line). A count of 10^12 in an ASCII
+// file made assimp take 22 GB of memory. The values themselves are left to assimp.
 void check_ply_lists(const fs::path& file, std::istream& in, bool binary, bool big_endian,
-                     const std::vector<PlyElement>& elements) {
+                     const std::vector<PlyElement>& elements, int header_lines) {
     const std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     std::size_t at = 0;
+    int line = header_lines;
+    const auto bad_count = [&](const PlyElement& element, std::uint64_t entry,
+                               const PlyProperty& list) {
+        refuse(file, element.name + " entry " + std::to_string(entry) +
+                         " has a list count that is not a whole number in [0, " +
+                         std::to_string(largest_count(list)) + "] (its count type)");
+    };
     const auto truncated = [&](const PlyElement& element, std::uint64_t entry) {
         refuse(file, "the data end inside " + element.name + " entry " + std::to_string(entry) +
                          " of " + std::to_string(element.count) + " (the file is truncated)");
-    };
-    // The next ASCII value, or nothing at the end of the data.
-    const auto token = [&]() -> std::string_view {
-        while (at < data.size() && std::isspace(static_cast<unsigned char>(data[at]))) ++at;
-        const std::size_t start = at;
-        while (at < data.size() && !std::isspace(static_cast<unsigned char>(data[at]))) ++at;
-        return std::string_view(data).substr(start, at - start);
     };
     // A binary integer of `bytes` bytes as the file's byte order gives it.
     const auto integer = [&](std::size_t bytes, bool is_signed) -> std::int64_t {
@@ -111,46 +118,62 @@ void check_ply_lists(const fs::path& file, std::istream& in, bool binary, bool b
             value = value << 8U | byte;
         }
         at += bytes;
-        if (is_signed && bytes < 8 && (value >> (8 * bytes - 1)) != 0) {
+        if (is_signed && (value >> (8 * bytes - 1)) != 0) {
             return static_cast<std::int64_t>(value) - (std::int64_t{1} << (8 * bytes));
         }
         return static_cast<std::int64_t>(value);
     };
     for (const PlyElement& element : elements) {
         for (std::uint64_t entry = 0; entry < element.count; ++entry) {
-            for (const PlyProperty& property : element.properties) {
-                if (!property.list) {
-                    if (binary ? data.size() - at < property.bytes : token().empty())
+            if (binary) {
+                for (const PlyProperty& property : element.properties) {
+                    const std::size_t head = property.list ? property.count_bytes : property.bytes;
+                    if (data.size() - at < head) truncated(element, entry);
+                    if (!property.list) {
+                        at += property.bytes;
+                        continue;
+                    }
+                    const std::int64_t count = integer(property.count_bytes, property.count_signed);
+                    if (count < 0) bad_count(element, entry, property);
+                    if ((data.size() - at) / property.bytes < static_cast<std::uint64_t>(count)) {
                         truncated(element, entry);
-                    if (binary) at += property.bytes;
+                    }
+                    at += static_cast<std::uint64_t>(count) * property.bytes;
+                }
+                continue;
+            }
+            if (at >= data.size()) truncated(element, entry);
+            const std::size_t end = std::min(data.find('\n', at), data.size());
+            const std::vector<std::string> values = words(data.substr(at, end - at));
+            at = end + 1;
+            ++line;
+            const std::string where = "line " + std::to_string(line) + " (" + element.name +
+                                      " entry " + std::to_string(entry) + "): ";
+            std::size_t next = 0;
+            for (const PlyProperty& property : element.properties) {
+                if (next >= values.size()) {
+                    refuse(file, where + "fewer values than the element's " +
+                                     std::to_string(element.properties.size()) +
+                                     " properties (each entry is one line)");
+                }
+                if (!property.list) {
+                    ++next;
                     continue;
                 }
-                const std::uint64_t largest =
-                    (std::uint64_t{1} << (8 * property.count_bytes - property.count_signed)) - 1;
-                std::int64_t count = 0;
-                if (binary) {
-                    if (data.size() - at < property.count_bytes) truncated(element, entry);
-                    count = integer(property.count_bytes, property.count_signed);
-                } else {
-                    const std::string_view text = token();
-                    if (text.empty()) truncated(element, entry);
-                    const auto [end, error] =
-                        std::from_chars(text.data(), text.data() + text.size(), count);
-                    if (error != std::errc() || end != text.data() + text.size()) count = -1;
+                const std::string& text = values[next++];
+                std::uint64_t count = 0;
+                const auto [stop, error] =
+                    std::from_chars(text.data(), text.data() + text.size(), count);
+                if (error != std::errc() || stop != text.data() + text.size() ||
+                    count > largest_count(property)) {
+                    bad_count(element, entry, property);
                 }
-                if (count < 0 || static_cast<std::uint64_t>(count) > largest) {
-                    refuse(file, element.name + " entry " + std::to_string(entry) +
-                                     " has a list count that is not a whole number in [0, " +
-                                     std::to_string(largest) + "] (its count type)");
+                if (count > values.size() - next) {
+                    refuse(file, where + "a list of " + std::to_string(count) +
+                                     " values, but the line holds only " +
+                                     std::to_string(values.size() - next) + " more");
                 }
-                const auto items = static_cast<std::uint64_t>(count);
-                if (binary) {
-                    if ((data.size() - at) / property.bytes < items) truncated(element, entry);
-                    at += items * property.bytes;
-                } else {
-                    for (std::uint64_t i = 0; i < items; ++i)
-                        if (token().empty()) truncated(element, entry);
-                }
+                next += count;
             }
         }
     }
@@ -269,7 +292,7 @@ void check_ply(const fs::path& file) {
         }
         left -= element.count * per_entry;
     }
-    check_ply_lists(file, in, binary, format[1] == "binary_big_endian", elements);
+    check_ply_lists(file, in, binary, format[1] == "binary_big_endian", elements, number);
 }
 
 // A binary STL is an 80-byte header, a 32-bit little-endian triangle count and 50 bytes per
@@ -345,46 +368,93 @@ void check_glb(const fs::path& file) {
     }
 }
 
-// OFF (Geomview): a keyword line (`OFF`, or with prefixes as `COFF`, `NOFF`, `STOFF`, `4OFF`),
-// then the vertex, face and edge counts, then the vertices and the faces as text. assimp
-// sizes its arrays by the counts, read as 32-bit numbers that wrap (an 849-byte file that
-// announced 129000000004 faces took 2.3 GB: found by fuzz_mesh_off), so the counts must be
-// ones the rest of the file can hold: a vertex takes at least 6 bytes (three values and their
-// blanks), a face 2. A header that is not of this form is left to assimp.
+// OFF (Geomview): a keyword (`OFF`, or with the prefixes ST, C, N, 4 as in `COFF`, `NOFF`,
+// `STOFF`), the vertex, face and edge counts, then one line per vertex (x y z and optional
+// colour, normal or texture values) and one per face (n, then n vertex indices from 0).
+// assimp's reader trusts all of it: it sizes arrays by counts read as wrapping 32-bit numbers
+// (129000000004 faces in an 849-byte file took 2.3 GB), counts a face's corners in one pass and
+// reads them in another with other rules (more than 9 corners, a missing line), which left
+// faces without corners and read past its vertex array (a crash); all found by fuzz_mesh_off.
+// So the whole file is checked here against the form assimp reads correctly, and refused with
+// the line that breaks it. Lines longer than assimp's 4096-byte line buffer are refused too.
 void check_off(const fs::path& file) {
-    std::error_code error;
-    const std::uintmax_t bytes = fs::file_size(file, error);
     std::ifstream in(file, std::ios::binary);
-    std::string keyword;
-    if (error || !(in >> keyword) || keyword.size() < 3 ||
-        keyword.compare(keyword.size() - 3, 3, "OFF") != 0) {
-        return;
-    }
-    std::array<std::uint64_t, 2> counts{};
-    for (std::uint64_t& count : counts) {
-        std::string word;
-        if (!(in >> word)) return;
-        const auto [end, parse_error] =
-            std::from_chars(word.data(), word.data() + word.size(), count);
-        if (parse_error != std::errc() || end != word.data() + word.size()) return;
-    }
-    const std::streamoff read = in.tellg();
-    const std::uint64_t left = read > 0 && bytes > static_cast<std::uintmax_t>(read)
-                                   ? bytes - static_cast<std::uint64_t>(read)
-                                   : 0;
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     const auto refuse_off = [&](const std::string& problem) {
         throw GeometryError("mesh file '" + file.string() +
                             "': cannot be read as .off: " + problem);
     };
-    if (counts[0] > max_mesh_vertices) {
-        refuse_off("the header announces " + std::to_string(counts[0]) +
+    if (text.find('\0') != std::string::npos) refuse_off("it holds a NUL byte: not a text file");
+    // Lines as assimp takes them: ended by CR or LF, empty ones skipped.
+    std::vector<std::pair<int, std::string_view>> lines;
+    int number = 1;
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t end = std::min(text.find_first_of("\r\n", at), text.size());
+        if (end > at) lines.emplace_back(number, std::string_view(text).substr(at, end - at));
+        if (end < text.size() && text[end] == '\n') ++number;
+        at = end + 1;
+    }
+    std::size_t next = 0;
+    std::vector<std::string> header;
+    // The keyword and the three counts, on one line or more; comment lines may come between.
+    while (header.size() < 4 && next < lines.size()) {
+        const std::vector<std::string> w = words(std::string(lines[next++].second));
+        if (!w.empty() && w[0][0] == '#') continue;
+        header.insert(header.end(), w.begin(), w.end());
+    }
+    const auto integer = [](std::string_view word, std::uint64_t& value) {
+        const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+        return error == std::errc() && end == word.data() + word.size();
+    };
+    std::array<std::uint64_t, 3> counts{};
+    static const std::regex keyword("(ST)?C?N?4?OFF");
+    if (header.size() != 4 || !std::regex_match(header[0], keyword) ||
+        !integer(header[1], counts[0]) || !integer(header[2], counts[1]) ||
+        !integer(header[3], counts[2])) {
+        refuse_off(
+            "it starts with its keyword (OFF, COFF, NOFF, STOFF, ...) and the vertex, "
+            "face and edge counts, three whole numbers; this one does not");
+    }
+    const std::uint64_t vertices = counts[0];
+    const std::uint64_t faces = counts[1];
+    if (vertices > max_mesh_vertices) {
+        refuse_off("the header announces " + std::to_string(vertices) +
                    " vertices, more than the " + std::to_string(max_mesh_vertices) +
                    " a mesh file may have (max_mesh_vertices)");
     }
-    if (counts[1] > left / 2 || 6 * counts[0] > left + 1 - 2 * counts[1]) {
-        refuse_off("the header announces " + std::to_string(counts[0]) + " vertices and " +
-                   std::to_string(counts[1]) + " faces, but only " + std::to_string(left) +
-                   " bytes follow it (at least 6 a vertex and 2 a face: the file is truncated)");
+    if (faces > lines.size() - next || vertices > lines.size() - next - faces) {
+        refuse_off("the header announces " + std::to_string(vertices) + " vertices and " +
+                   std::to_string(faces) + " faces, one line each, but only " +
+                   std::to_string(lines.size() - next) + " lines follow it");
+    }
+    for (std::uint64_t i = 0; i < vertices + faces; ++i) {
+        const auto [line, content] = lines[next + i];
+        const std::string where = "line " + std::to_string(line) + " (" +
+                                  shown(std::string(content.substr(0, 80))) + "): ";
+        if (content.size() > 4095) refuse_off(where + "longer than 4095 characters");
+        const std::vector<std::string> w = words(std::string(content));
+        if (i < vertices) {
+            double value = 0;
+            bool numbers = w.size() >= 3;
+            for (std::size_t k = 0; numbers && k < 3; ++k) {
+                const auto [end, error] =
+                    std::from_chars(w[k].data(), w[k].data() + w[k].size(), value);
+                numbers = error == std::errc() && end == w[k].data() + w[k].size();
+            }
+            if (!numbers) refuse_off(where + "a vertex line starts with three numbers, x y z");
+            continue;
+        }
+        std::uint64_t corners = 0;
+        bool good = !w.empty() && integer(w[0], corners) && corners >= 1 && corners <= 9 &&
+                    w.size() > corners;
+        for (std::uint64_t k = 1; good && k <= corners; ++k) {
+            std::uint64_t index = 0;
+            good = integer(w[k], index) && index < vertices;
+        }
+        if (!good) {
+            refuse_off(where + "a face line is n (1 to 9) and n vertex indices in [0, " +
+                       std::to_string(vertices) + ")");
+        }
     }
 }
 

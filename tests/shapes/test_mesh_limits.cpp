@@ -186,15 +186,17 @@ TEST_CASE("counts and lengths a mesh file cannot hold are refused before assimp 
         "element vertex 8\nproperty float x\nproperty float y\nproperty float z\n";
     const std::string faces =
         "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
-    // A PLY list count beyond its type or the values that follow (a count of 10^12 made assimp
-    // take 22 GB), and a list whose count type is not an integer.
+    // A PLY list count beyond its type or the values on its line (a count of 10^12 made assimp
+    // take 22 GB), an entry short of values, and a list whose count type is not an integer.
     const std::pair<std::string, std::string> plies[] = {
         {ply_header(vertex + faces) + cube_vertices + "3 0 1 2\n999999999999 0 1 2\n",
          "face entry 1 has a list count that is not a whole number in [0, 255]"},
         {ply_header(vertex + faces) + cube_vertices + "3 0 1 2\n200 0 1 2\n",
-         "the data end inside face entry 1 of 2 (the file is truncated)"},
+         "line 19 (face entry 1): a list of 200 values, but the line holds only 3 more"},
         {ply_header(vertex + faces) + cube_vertices + "3 0 1 2\n-3 0 1 2\n",
          "face entry 1 has a list count that is not a whole number in [0, 255]"},
+        {ply_header(vertex + faces) + "0 0 0\n0 0\n" + cube_vertices.substr(12) + "3 0 1 2\n",
+         "line 11 (vertex entry 1): fewer values than the element's 3 properties"},
         {ply_header(vertex + "element face 1\nproperty list float int vertex_indices\n"
                              "end_header\n") +
              cube_vertices + "3 0 1 2\n",
@@ -215,7 +217,28 @@ TEST_CASE("counts and lengths a mesh file cannot hold are refused before assimp 
     const TemporaryMesh off("counts.off", "OFF\n8 129000000004 0\n" + cube_vertices + "3 0 1 2\n");
     CHECK_THAT(error_of(off.path()),
                Contains("cannot be read as .off: the header announces 8 vertices and "
-                        "129000000004 faces, but only"));
+                        "129000000004 faces, one line each, but only 9 lines follow it"));
+    // Face lines assimp's two passes read differently (a crash): every face is 1 to 9 corners
+    // naming vertices that exist, every vertex three numbers; no NUL byte.
+    const std::pair<std::string, std::string> offs[] = {
+        {"OFF\n8 1 0\n" + cube_vertices + "10 0 1 2 3 4 5 6 7 0 1\n",
+         "line 11 (\"10 0 1 2 3 4 5 6 7 0 1\"): a face line is n (1 to 9) and n vertex indices "
+         "in [0, 8)"},
+        {"OFF\n8 1 0\n" + cube_vertices + "3 0 1 8\n", "line 11 (\"3 0 1 8\"): a face line"},
+        {"OFF\n8 1 0\n" + cube_vertices + "3 0 1\n", "line 11 (\"3 0 1\"): a face line"},
+        {"OFF\n8 1 0\n0 0\n" + cube_vertices.substr(6) + "3 0 1 2\n",
+         "line 3 (\"0 0\"): a vertex line starts with three numbers"},
+        {std::string("OFF\n8 1 0\n") + '\0' + cube_vertices + "3 0 1 2\n", "it holds a NUL byte"},
+        {"8 1 0\n" + cube_vertices + "3 0 1 2\n", "it starts with its keyword"},
+    };
+    for (const auto& [text, problem] : offs) {
+        const TemporaryMesh file("face_" + std::to_string(++number) + ".off", text);
+        INFO(text);
+        CHECK_THAT(error_of(file.path()), Contains("cannot be read as .off: " + problem));
+    }
+    const TemporaryMesh good_off(
+        "good.off", "OFF\n# a cube\n8 2 0\n\n" + cube_vertices + "3 0 1 2 255 0 0\n4 4 5 7 6\n");
+    CHECK(read_mesh_hull(good_off.path()).vertices.size() == 8);
     const TemporaryMesh off_many("many.off", "OFF\n200001 1 0\n" + cube_vertices);
     CHECK_THAT(error_of(off_many.path()), Contains("announces 200001 vertices, more than the"));
 
