@@ -43,8 +43,15 @@ struct PlyElement {
     std::uint64_t least_bytes = 0;
 };
 
+// A file refused by its format's rules, `extension` naming the format (".ply").
+[[noreturn]] void refuse_as(const fs::path& file, const std::string& extension,
+                            const std::string& problem) {
+    throw GeometryError("mesh file '" + file.string() + "': cannot be read as " + extension + ": " +
+                        problem);
+}
+
 [[noreturn]] void refuse(const fs::path& file, const std::string& problem) {
-    throw GeometryError("mesh file '" + file.string() + "': cannot be read as .ply: " + problem);
+    refuse_as(file, ".ply", problem);
 }
 
 // Size in bytes of a PLY scalar type, 0 for an unknown name.
@@ -336,8 +343,7 @@ void check_glb(const fs::path& file) {
         return;  // not binary glTF at all: assimp says so
     }
     const auto refuse_glb = [&](const std::string& problem) {
-        throw GeometryError("mesh file '" + file.string() + "': cannot be read as .glb: " +
-                            problem + " (the file has " + std::to_string(bytes) + " bytes)");
+        refuse_as(file, ".glb", problem + " (the file has " + std::to_string(bytes) + " bytes)");
     };
     const std::uint32_t version = little_endian_32(&head[4]);
     if (version == 1) {
@@ -380,10 +386,7 @@ void check_glb(const fs::path& file) {
 void check_off(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    const auto refuse_off = [&](const std::string& problem) {
-        throw GeometryError("mesh file '" + file.string() +
-                            "': cannot be read as .off: " + problem);
-    };
+    const auto refuse_off = [&](const std::string& problem) { refuse_as(file, ".off", problem); };
     if (text.find('\0') != std::string::npos) refuse_off("it holds a NUL byte: not a text file");
     // Lines as assimp takes them: ended by CR or LF, empty ones skipped.
     std::vector<std::pair<int, std::string_view>> lines;
