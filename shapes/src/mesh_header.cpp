@@ -240,7 +240,11 @@ void check_ply(const fs::path& file) {
         if (w[0] == "element") {
             PlyElement element;
             const char* end = w.size() == 3 ? w[2].data() + w[2].size() : nullptr;
-            if (w.size() != 3 || std::from_chars(w[2].data(), end, element.count).ptr != end) {
+            // An overflowing count is out of range for from_chars, not only a short read.
+            const std::from_chars_result parsed =
+                w.size() == 3 ? std::from_chars(w[2].data(), end, element.count)
+                              : std::from_chars_result{nullptr, std::errc::invalid_argument};
+            if (parsed.ec != std::errc() || parsed.ptr != end) {
                 refuse(file, where + "an element line is `element NAME COUNT`, COUNT >= 0");
             }
             element.name = w[1];
