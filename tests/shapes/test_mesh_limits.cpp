@@ -214,6 +214,9 @@ TEST_CASE("counts and lengths a mesh file cannot hold are refused before assimp 
                              ply_header("element vertex 65555555555555555555555555\nproperty "
                                         "float x\nend_header\n0\n"));
     CHECK_THAT(error_of(huge.path()), Contains("an element line is `element NAME COUNT`"));
+    const TemporaryMesh nul(
+        "nul.ply", ply_header(vertex + faces) + cube_vertices + "3 0 1 2\n3 1" + '\0' + "1 0 1\n");
+    CHECK_THAT(error_of(nul.path()), Contains("the ASCII data hold a NUL byte"));
     // The same good file passes the walk.
     const TemporaryMesh good("lists.ply",
                              ply_header(vertex + faces) + cube_vertices + "3 0 1 2\n4 4 5 6 7\n");
