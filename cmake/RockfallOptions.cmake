@@ -17,3 +17,21 @@ if(ROCKFALL_SANITIZE)
         -fno-omit-frame-pointer)
     add_link_options(-fsanitize=address,undefined)
 endif()
+
+# ROCKFALL_FUZZ: coverage instrumentation for libFuzzer on every object, so that the fuzz
+# targets in fuzz/ are guided through the readers and everything they call; the targets link
+# libFuzzer itself. clang only (Debian: clang and libclang-rt-14-dev). ROCKFALL_FUZZ_SANITIZE
+# adds sanitizers to the same build, e.g. "address,undefined" (slower, finds more).
+set(ROCKFALL_FUZZ_SANITIZE "" CACHE STRING
+    "Sanitizers for the fuzz build (-fsanitize= list, e.g. address,undefined); empty: none")
+if(ROCKFALL_FUZZ)
+    if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+        message(FATAL_ERROR "ROCKFALL_FUZZ=ON needs clang (libFuzzer): configure with "
+            "-DCMAKE_CXX_COMPILER=clang++ (scripts/fuzz.sh does)")
+    endif()
+    add_compile_options(-fsanitize=fuzzer-no-link -fno-omit-frame-pointer)
+    if(ROCKFALL_FUZZ_SANITIZE)
+        add_compile_options(-fsanitize=${ROCKFALL_FUZZ_SANITIZE} -fno-sanitize-recover=all)
+        add_link_options(-fsanitize=${ROCKFALL_FUZZ_SANITIZE})
+    endif()
+endif()

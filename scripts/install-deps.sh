@@ -15,6 +15,8 @@ packages=(
     libsqlite3-dev sqlite3 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
     # tests and format check
     catch2 clang-format
+    # fuzz targets (scripts/fuzz.sh, run by CI): clang and its libFuzzer runtime
+    clang libclang-rt-14-dev
 )
 
 missing=()

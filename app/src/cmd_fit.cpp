@@ -2,9 +2,9 @@
 // measured (CSV) or simulated (results database) impacts, per shape, with the fit's quality,
 // range and a figure.
 
-#include "atomic_file.hpp"
 #include "commands.hpp"
 #include "impact_source.hpp"
+#include "output_file.hpp"
 #include "report/fit_figure.hpp"
 #include "report/fit_report.hpp"
 

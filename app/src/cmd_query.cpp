@@ -1,7 +1,7 @@
 // `rockfall query DB <what>`: questions on a results database written by `rockfall sweep`.
 
-#include "atomic_file.hpp"
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "report/curve_figure.hpp"
 #include "report/fit_figure.hpp"
 #include "report/query_report.hpp"

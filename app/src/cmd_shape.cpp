@@ -1,8 +1,8 @@
 // `rockfall shape (FILE | --kind K | --generate G)`: the shape measures of one rock (or of
 // every entry of a catalogue), and its hull as OBJ or STL.
 
-#include "atomic_file.hpp"
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "report/shape_report.hpp"
 #include "scenario/shape_source.hpp"
 
@@ -37,12 +37,12 @@ report::ShapeView view(const scenario::ShapeResult& shape) {
 // The simulated hull as OBJ or STL (committed only when complete).
 void write_meshes(const ShapeArgs& args, const scenario::ShapeResult& shape) {
     if (args.obj) {
-        AtomicFile file(*args.obj);
+        OutputFile file(*args.obj);
         shapes::write_obj(file.stream(), shape.rock.hull, report::shape_mesh_header(view(shape)));
         file.commit();
     }
     if (args.stl) {
-        AtomicFile file(*args.stl);
+        OutputFile file(*args.stl);
         shapes::write_stl(file.stream(), shape.rock.hull, shape.label);
         file.commit();
     }

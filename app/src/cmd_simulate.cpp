@@ -1,7 +1,7 @@
 // `rockfall simulate`: one release of a scenario, summary or JSON, optional trajectory CSV.
 
-#include "atomic_file.hpp"
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "report/simulation_report.hpp"
 #include "scenario/scenario_file.hpp"
 
@@ -90,7 +90,7 @@ class TrajectoryCsv {
     void commit() { file_.commit(); }
 
   private:
-    AtomicFile file_;
+    OutputFile file_;
 };
 
 void run_simulate(const SimulateArgs& args) {

@@ -1,8 +1,8 @@
 // `rockfall soil`: one soil flow (scenario C, MPM), summary or JSON, optional wall-load CSV,
 // particle frames for ParaView and a results database.
 
-#include "atomic_file.hpp"
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "report/query_table.hpp"
 #include "report/soil_report.hpp"
 #include "scenario/load_record.hpp"
@@ -59,7 +59,8 @@ class VtkFrames {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%05d.vtk", count_);
         try {
-            mpm::write_vtk(dir_ / name, frame);
+            write_output_file(dir_ / name,
+                              [&frame](const fs::path& file) { mpm::write_vtk(file, frame); });
             ++count_;
         } catch (const std::exception& e) {
             error_ = e.what();
@@ -78,7 +79,7 @@ class VtkFrames {
 
 // Writes the sampled history (committed only when complete).
 void write_csv(const fs::path& path, const db::SoilRunRecord& record) {
-    AtomicFile file(path);
+    OutputFile file(path);
     report::print_csv(file.stream(), report::soil_history(record));
     file.commit();
 }
@@ -97,8 +98,11 @@ void run_soil_command(const SoilArgs& args) {
         risk::check_comparable(file.scenario.numerics.dimension == 2, output.sample_interval, last,
                                *measured);
     }
-    // Refuse an existing or unwritable database now rather than after the run.
+    // Refuse an existing or unwritable database and output paths that may not be written now
+    // rather than after the run.
     if (!args.db.empty()) db::check_new_database(args.db);
+    for (const std::string& output : {args.csv, args.svg})
+        if (!output.empty()) output_target(output);
     std::unique_ptr<VtkFrames> frames;
     if (!args.vtk_dir.empty()) frames = std::make_unique<VtkFrames>(args.vtk_dir);
     const bool progress = isatty(STDERR_FILENO) != 0;

@@ -2,6 +2,7 @@
 // database, on all cores, resumable, with an optional confidence-interval stop rule.
 
 #include "commands.hpp"
+#include "integer_option.hpp"
 #include "progress.hpp"
 #include "report/query_report.hpp"
 #include "report/text_format.hpp"
@@ -43,6 +44,7 @@ struct SweepArgs {
     bool quiet = false;
     double trajectory_interval = 0.0;
     std::int64_t crash_after = -1;
+    bool interrupt_at_create = false;
 };
 
 // Set by SIGINT and SIGTERM; the sweep then stops taking samples, writes what finished and
@@ -155,6 +157,11 @@ int run_sweep(const SweepArgs& args) {
                                      {"trajectory_interval_s", args.trajectory_interval}};
     const db::RunRecord wanted = make_run_record(file, spec, stop_rule, settings);
 
+    // Handlers before the database is made: a Ctrl-C while it is created then ends the run as
+    // interrupted, with a whole file that --resume continues, instead of killing the process
+    // and leaving the hidden part file.
+    install_interrupt_handlers();
+    if (args.interrupt_at_create) std::raise(SIGINT);
     std::optional<db::ResultsDb> opened;
     if (args.resume) {
         opened.emplace(db::ResultsDb::open(args.db, true));
@@ -186,7 +193,6 @@ int run_sweep(const SweepArgs& args) {
             std::cerr << "resuming: " << stored.size() << " samples stored, " << pending.size()
                       << " to run\n";
     }
-    install_interrupt_handlers();
     Progress progress(std::cerr, progress_mode_for_stderr(args.quiet), limit, "samples");
     auto done = static_cast<std::int64_t>(stored.size());
     progress.set_already(done);
@@ -261,7 +267,7 @@ void register_sweep(CLI::App& app) {
         ->required();
     cmd->add_option("--samples", args->samples,
                     "Number of samples (with --until: the most to run); default: [sweep] samples")
-        ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40));
+        ->transform(integer_in(1, risk::max_samples, "a sample count"));
     cmd->add_option("--seed", args->seed, "Run seed; default: [sweep] seed");
     cmd->add_option("--method", args->method, "Sampling method; default: [sweep] method")
         ->check(CLI::IsMember({"monte_carlo", "mc", "latin_hypercube", "lhs"}));
@@ -290,6 +296,8 @@ void register_sweep(CLI::App& app) {
         ->capture_default_str();
     // For the resume tests: crash in the middle of a batch once this many samples are stored.
     cmd->add_option("--crash-after", args->crash_after)->group("");
+    // For the interrupt test: SIGINT to itself just before the database is created.
+    cmd->add_flag("--interrupt-at-create", args->interrupt_at_create)->group("");
     cmd->callback([args] {
         const int code = run_sweep(*args);
         if (code != 0) throw CLI::RuntimeError(code);

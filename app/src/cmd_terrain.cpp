@@ -2,8 +2,8 @@
 // from the reference profile) and, with --obj, the mesh as the engine simulates it; for a
 // scenario without one, its reference profile triangulated (optionally roughened) as a mesh.
 
-#include "atomic_file.hpp"
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "report/terrain_report.hpp"
 #include "scenario/scenario_file.hpp"
 
@@ -61,7 +61,7 @@ void run(const TerrainArgs& args) {
     }
     const shapes::TriangleMesh& mesh = terrain ? terrain->mesh() : generated;
     if (args.obj) {
-        AtomicFile out(*args.obj);
+        OutputFile out(*args.obj);
         shapes::write_obj(out.stream(), mesh, comment);
         out.commit();
     }

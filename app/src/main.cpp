@@ -1,6 +1,7 @@
 // The `rockfall` program: parses the command line and dispatches to a subcommand.
 
 #include "commands.hpp"
+#include "integer_option.hpp"
 #include "scenario/scenario_file.hpp"
 
 #include "db/results_db.hpp"
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
     rockfall::app::register_shape(app);
     rockfall::app::register_terrain(app);
     rockfall::app::register_query(app);
+    rockfall::app::check_seed_options(app);
     // CLI11 reads an unknown first word as a stray positional and answers "A subcommand is
     // required"; name what was typed and list the commands instead.
     if (argc > 1 && argv[1][0] != '-') {

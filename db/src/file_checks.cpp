@@ -114,6 +114,12 @@ PartFiles part_files(const fs::path& target) {
 
 void require_creatable(const fs::path& path) {
     std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    if (fs::exists(status) && !fs::is_regular_file(status)) {
+        refuse(path,
+               " is not a regular file (a directory, device, FIFO or socket): a results "
+               "database is a regular file that rockfall creates; give a new file name");
+    }
     if (fs::exists(fs::symlink_status(path, error))) {
         refuse(path,
                " exists already; rockfall never overwrites results: choose another file "
@@ -159,7 +165,9 @@ void require_database_file(const fs::path& path, bool writable) {
         refuse(path, ": no such file; give a results database written by `rockfall sweep`");
     }
     if (!fs::is_regular_file(status)) {
-        refuse(path, " is not a file; give a results database written by `rockfall sweep`");
+        refuse(path,
+               " is not a regular file (a directory, device, FIFO or socket); give a "
+               "results database written by `rockfall sweep`");
     }
     // SQLite treats an empty or unreadable file in its own terms ("file is not a database",
     // or an empty database it would happily write to); the header says it plainly first.

@@ -113,10 +113,11 @@ toml::table parse_toml(std::string_view text, const std::string& source) {
     }
 }
 
-// Resolves `extends` in `table`, written in `source`; `base_dir` resolves relative paths and
-// `chain` holds the files being resolved, outermost first, to detect cycles.
-toml::table resolve_extends(toml::table table, const std::string& source, const fs::path& base_dir,
-                            std::vector<fs::path>& chain) {
+namespace {
+
+// resolve_extends below, `depth` bases down from the file being loaded.
+toml::table resolve_extends_at(toml::table table, const std::string& source,
+                               const fs::path& base_dir, std::vector<fs::path>& chain, int depth) {
     const toml::node* extends = table.get("extends");
     if (extends == nullptr) return table;
     const Location where = node_location(*extends, source);
@@ -135,14 +136,29 @@ toml::table resolve_extends(toml::table table, const std::string& source, const 
         fail(where.file, where.line,
              "extends forms a cycle: " + cycle + identity.filename().string());
     }
+    // Checked before the base is read: a chain of any length costs at most this many reads.
+    if (depth >= max_extends_depth) {
+        fail(where.file, where.line,
+             "extends = \"" + name->get() + "\": the chain of base scenarios goes " +
+                 std::to_string(depth + 1) + " files deep here; the most is " +
+                 std::to_string(max_extends_depth));
+    }
     const std::string base_source = base_path.string();
     toml::table base = parse_toml(read_text(base_path, where.file, where.line), base_source);
     chain.push_back(identity);
-    base = resolve_extends(std::move(base), base_source, base_path.parent_path(), chain);
+    base =
+        resolve_extends_at(std::move(base), base_source, base_path.parent_path(), chain, depth + 1);
     chain.pop_back();
     table.erase("extends");
     merge(base, std::move(table));
     return base;
+}
+
+}  // namespace
+
+toml::table resolve_extends(toml::table table, const std::string& source, const fs::path& base_dir,
+                            std::vector<fs::path>& chain) {
+    return resolve_extends_at(std::move(table), source, base_dir, chain, 0);
 }
 
 }  // namespace detail

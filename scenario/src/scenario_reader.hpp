@@ -44,7 +44,7 @@ toml::table parse_toml(std::string_view text, const std::string& source);
 
 // Resolves `extends` in `table`, written in `source`: the base (relative to `base_dir`) is read
 // and overridden key by key. `chain` holds the canonical paths of the files being resolved,
-// outermost first, to detect cycles.
+// outermost first, to detect cycles; at most max_extends_depth bases are followed.
 toml::table resolve_extends(toml::table table, const std::string& source,
                             const std::filesystem::path& base_dir,
                             std::vector<std::filesystem::path>& chain);

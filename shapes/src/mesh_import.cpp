@@ -6,7 +6,9 @@
 #include "shapes/rocks.hpp"
 
 #include <Eigen/Geometry>
+#include <assimp/BaseImporter.h>
 #include <assimp/Importer.hpp>
+#include <assimp/importerdesc.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -91,6 +93,68 @@ void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& pa
     }
 }
 
+// assimp's readers can leave a scene its own post-processing asserts on (Debian builds assimp
+// with assertions, which abort): an OFF file that declares more faces than it holds gets faces
+// without corners, and a face or node may name an index past the end. Its validation step
+// would also refuse point clouds (meshes without faces), so the structure is checked here.
+void check_structure(const fs::path& file, const aiScene& scene) {
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& mesh = *scene.mMeshes[m];
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            const std::string which = "face " + std::to_string(f + 1) + " of mesh " +
+                                      std::to_string(m + 1) + " (counting from 1)";
+            if (face.mNumIndices == 0) {
+                fail(file, which +
+                               " has no corners: the file lists fewer faces than it declares, "
+                               "or a face line is broken");
+            }
+            for (unsigned k = 0; k < face.mNumIndices; ++k) {
+                if (face.mIndices[k] >= mesh.mNumVertices) {
+                    fail(file, which + " names vertex " + std::to_string(face.mIndices[k]) +
+                                   " of a mesh with " + std::to_string(mesh.mNumVertices) +
+                                   " vertices (numbered from 0)");
+                }
+            }
+        }
+    }
+    std::vector<const aiNode*> nodes;
+    if (scene.mRootNode != nullptr) nodes.push_back(scene.mRootNode);
+    while (!nodes.empty()) {
+        const aiNode& node = *nodes.back();
+        nodes.pop_back();
+        for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+            if (node.mMeshes[i] >= scene.mNumMeshes) {
+                fail(file, "a node names mesh " + std::to_string(node.mMeshes[i]) + " of " +
+                               std::to_string(scene.mNumMeshes));
+            }
+        }
+        for (unsigned i = 0; i < node.mNumChildren; ++i) nodes.push_back(node.mChildren[i]);
+    }
+}
+
+// assimp picks its importer by the extension; when several claim it (.gltf and .glb: glTF 1
+// and glTF 2) it asks each whether the contents are theirs, and when none does it tries every
+// importer it has on the contents: a broken .gltf then went to the OpenGEX importer, which
+// crashed on it (found by fuzz_mesh_gltf). A file no importer of its extension recognises is
+// refused here instead; with one importer assimp uses it without asking, and never falls back.
+void check_importer(const fs::path& file, const Assimp::Importer& importer) {
+    const std::string extension = lower_extension(file).substr(1);
+    std::vector<Assimp::BaseImporter*> claims;
+    for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+        std::istringstream extensions(importer.GetImporterInfo(i)->mFileExtensions);
+        for (std::string claimed; extensions >> claimed;) {
+            if (claimed == extension) claims.push_back(importer.GetImporter(i));
+        }
+    }
+    if (claims.size() <= 1) return;
+    for (Assimp::BaseImporter* candidate : claims) {
+        if (candidate->CanRead(file.string(), importer.GetIOHandler(), true)) return;
+    }
+    fail(file, "cannot be read as ." + extension + ": none of assimp's ." + extension +
+                   " readers recognises its contents");
+}
+
 bool has_polygons(const aiScene& scene) {
     for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
         if ((scene.mMeshes[i]->mPrimitiveTypes & aiPrimitiveType_POLYGON) != 0) return true;
@@ -114,10 +178,12 @@ std::vector<Vec3> import_mesh(const fs::path& file, std::vector<std::array<int, 
     // No post-processing on reading: a hull needs only the vertices, and assimp's steps reject
     // point clouds (meshes without faces). assimp logs nothing unless a logger is created.
     Assimp::Importer importer;
+    check_importer(file, importer);
     const aiScene* scene = importer.ReadFile(file.string(), 0);
     if (scene == nullptr) {
         fail(file, "cannot be read as " + lower_extension(file) + ": " + importer.GetErrorString());
     }
+    check_structure(file, *scene);
     // Faces of more than three corners (quads of a survey grid) become triangles; only files
     // that have such faces go through the step, so point clouds still reach our own checks.
     if (triangles != nullptr && has_polygons(*scene)) {

@@ -62,7 +62,7 @@ out=$("$rockfall" sweep "$scenario" --db "$work/huge.db" --samples 1099511627776
 code=$?
 set -e
 echo "$out"
-[ "$code" -eq 2 ] && grep -q "1099511627776: must be in \[1, 100000000\]" <<<"$out" ||
+[ "$code" -eq 2 ] && grep -q -- "--samples: 1099511627776 is out of range: a sample count must be a whole number in \[1, 100000000\]" <<<"$out" ||
     { echo "expected a refusal with the range, got $code"; exit 1; }
 [ -z "$(ls -A "$work" | grep huge || true)" ] || { echo "a refused sweep left files"; ls -A "$work"; exit 1; }
 echo "too many samples: refused, nothing written"

@@ -3,6 +3,9 @@
 # finished samples, marks the run interrupted and exits 130; --resume then completes it. 600
 # samples take about 10 s on one thread, so the interrupt comes long before the end even on a
 # loaded machine (the first batch is stored after 1 s).
+# A SIGINT while the database is being created (sent by the sweep to itself just before, with
+# the hidden --interrupt-at-create) ends the run the same way: a whole file marked interrupted,
+# no hidden part file left, exit 130, and --resume completes it.
 set -euo pipefail
 rockfall=$1 scenario=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
@@ -39,3 +42,19 @@ echo "interrupted with $stored of 600 samples stored"
 [ "$(sqlite3 "$db" "SELECT count(*) FROM samples")" = 600 ]
 [ "$(sqlite3 "$db" "SELECT status FROM run")" = complete ]
 echo "resumed to 600 samples, complete"
+
+early="$work/early.db"
+set +e
+"$rockfall" sweep "$scenario" --db "$early" --threads 1 --samples 100 --quiet --interrupt-at-create \
+    >"$work/early.txt" 2>&1
+code=$?
+set -e
+cat "$work/early.txt"
+[ "$code" -eq 130 ] || { echo "SIGINT at creation: expected exit 130, got $code"; exit 1; }
+[ "$(sqlite3 "file:$early?mode=ro" "SELECT status FROM run")" = interrupted ]
+parts=$(find "$work" -name '.early.db.*')
+[ -z "$parts" ] || { echo "SIGINT at creation left part files: $parts"; exit 1; }
+echo "SIGINT at creation: a whole database marked interrupted, no part file"
+"$rockfall" sweep "$scenario" --db "$early" --threads 2 --samples 100 --resume --quiet >/dev/null
+[ "$(sqlite3 "$early" "SELECT count(*) FROM samples")" = 100 ]
+echo "resumed to 100 samples, complete"

@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <string>
+#include <sys/stat.h>
 
 using namespace rockfall::db;
 using rockfall::db::test::read_bytes;
@@ -59,7 +60,7 @@ TEST_CASE("a missing file or a directory is refused", "[db]") {
     ScratchDir dir;
     CHECK_THROWS_WITH(ResultsDb::open(dir / "nope.db", false),
                       Catch::Contains("nope.db: no such file"));
-    CHECK_THROWS_WITH(ResultsDb::open(dir.path(), false), Catch::Contains("is not a file"));
+    CHECK_THROWS_WITH(ResultsDb::open(dir.path(), false), Catch::Contains("is not a regular file"));
     CHECK(dir.files().empty());
 }
 
@@ -161,6 +162,24 @@ TEST_CASE("create refuses an existing file and leaves it unchanged", "[db]") {
     }
     CHECK(read_bytes(dir / "precious.db") == "results of last year");
     CHECK(dir.files() == std::vector<std::string>{"precious.db"});
+}
+
+TEST_CASE("create and open refuse what is not a regular file, and leave it as it was", "[db]") {
+    ScratchDir dir;
+    fs::create_directory(dir / "folder.db");
+    REQUIRE(mkfifo((dir / "pipe.db").c_str(), 0600) == 0);
+    const RunRecord run = testing::synthetic_run({}, 10);
+    for (const std::string name : {"folder.db", "pipe.db"}) {
+        CHECK_THROWS_WITH(ResultsDb::create(dir / name, run),
+                          Catch::Contains(name + " is not a regular file") &&
+                              Catch::Contains("a results database is a regular file"));
+        CHECK_THROWS_WITH(ResultsDb::open(dir / name, true),
+                          Catch::Contains(name + " is not a regular file"));
+    }
+    CHECK(fs::is_directory(dir / "folder.db"));
+    CHECK(fs::is_empty(dir / "folder.db"));
+    CHECK(fs::is_fifo(dir / "pipe.db"));
+    CHECK(dir.files() == std::vector<std::string>{"folder.db", "pipe.db"});
 }
 
 TEST_CASE("a failed create leaves nothing behind", "[db]") {

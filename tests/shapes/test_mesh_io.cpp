@@ -183,6 +183,13 @@ TEST_CASE("every bad mesh is a GeometryError naming the file and the problem", "
         {"empty.stl", "contains no vertices (empty mesh)"},
         {"nan.obj", "non-finite coordinates"},
         {"inf.off", "non-finite coordinates"},
+        {"short_faces.off",
+         "the header announces 8 vertices and 12 faces, one line each, but "
+         "only 18 lines follow it"},
+        {"fuzz_crash.off", "cannot be read as .off: line 5"},
+        {"bad_index.ply",
+         "face 12 of mesh 1 (counting from 1) names vertex 8 of a mesh with 8 "
+         "vertices"},
         {"flat.obj", "collinear or coplanar"},
         {"collinear.ply", "collinear or coplanar"},
         {"km_rock.obj", "diameter is 1240.7 m, outside the accepted [0.001, 100] m"},

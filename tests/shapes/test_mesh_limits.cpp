@@ -176,3 +176,99 @@ TEST_CASE("a rock hull beyond max_hull_vertices is refused", "[shapes][mesh]") {
                Contains("its convex hull has 2001 vertices, more than the 2000 a rock may have "
                         "(max_hull_vertices"));
 }
+
+// Found by the fuzz targets (docs/fuzzing.md): counts and lengths in a file that assimp sizes
+// its arrays by before reading what they count, and a broken glTF that assimp handed to
+// another format's importer, which crashed.
+TEST_CASE("counts and lengths a mesh file cannot hold are refused before assimp reads it",
+          "[shapes][mesh]") {
+    const std::string vertex =
+        "element vertex 8\nproperty float x\nproperty float y\nproperty float z\n";
+    const std::string faces =
+        "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
+    // A PLY list count beyond its type or the values on its line (a count of 10^12 made assimp
+    // take 22 GB), an entry short of values, and a list whose count type is not an integer.
+    const std::pair<std::string, std::string> plies[] = {
+        {ply_header(vertex + faces) + cube_vertices + "3 0 1 2\n999999999999 0 1 2\n",
+         "face entry 1 has a list count that is not a whole number in [0, 255]"},
+        {ply_header(vertex + faces) + cube_vertices + "3 0 1 2\n200 0 1 2\n",
+         "line 19 (face entry 1): a list of 200 values, but the line holds only 3 more"},
+        {ply_header(vertex + faces) + cube_vertices + "3 0 1 2\n-3 0 1 2\n",
+         "face entry 1 has a list count that is not a whole number in [0, 255]"},
+        {ply_header(vertex + faces) + "0 0 0\n0 0\n" + cube_vertices.substr(12) + "3 0 1 2\n",
+         "line 11 (vertex entry 1): fewer values than the element's 3 properties"},
+        {ply_header(vertex + "element face 1\nproperty list float int vertex_indices\n"
+                             "end_header\n") +
+             cube_vertices + "3 0 1 2\n",
+         "a list's count type must be an integer type"},
+    };
+    int number = 0;
+    for (const auto& [text, problem] : plies) {
+        const TemporaryMesh file("list_" + std::to_string(++number) + ".ply", text);
+        INFO(text);
+        CHECK_THAT(error_of(file.path()), Contains(problem));
+    }
+    // A count too large for 64 bits was read as 0 by the header check (found by fuzz_mesh_ply:
+    // assimp then read for ever).
+    const TemporaryMesh huge("huge_count.ply",
+                             ply_header("element vertex 65555555555555555555555555\nproperty "
+                                        "float x\nend_header\n0\n"));
+    CHECK_THAT(error_of(huge.path()), Contains("an element line is `element NAME COUNT`"));
+    const TemporaryMesh nul(
+        "nul.ply", ply_header(vertex + faces) + cube_vertices + "3 0 1 2\n3 1" + '\0' + "1 0 1\n");
+    CHECK_THAT(error_of(nul.path()), Contains("the ASCII data hold a NUL byte"));
+    // The same good file passes the walk.
+    const TemporaryMesh good("lists.ply",
+                             ply_header(vertex + faces) + cube_vertices + "3 0 1 2\n4 4 5 6 7\n");
+    CHECK(read_mesh_hull(good.path()).vertices.size() == 8);
+
+    // OFF counts, read by assimp as wrapping 32-bit numbers (129000000004 faces took 2.3 GB).
+    const TemporaryMesh off("counts.off", "OFF\n8 129000000004 0\n" + cube_vertices + "3 0 1 2\n");
+    CHECK_THAT(error_of(off.path()),
+               Contains("cannot be read as .off: the header announces 8 vertices and "
+                        "129000000004 faces, one line each, but only 9 lines follow it"));
+    // Face lines assimp's two passes read differently (a crash): every face is 1 to 9 corners
+    // naming vertices that exist, every vertex three numbers; no NUL byte.
+    const std::pair<std::string, std::string> offs[] = {
+        {"OFF\n8 1 0\n" + cube_vertices + "10 0 1 2 3 4 5 6 7 0 1\n",
+         "line 11 (\"10 0 1 2 3 4 5 6 7 0 1\"): a face line is n (1 to 9) and n vertex indices "
+         "in [0, 8)"},
+        {"OFF\n8 1 0\n" + cube_vertices + "3 0 1 8\n", "line 11 (\"3 0 1 8\"): a face line"},
+        {"OFF\n8 1 0\n" + cube_vertices + "3 0 1\n", "line 11 (\"3 0 1\"): a face line"},
+        {"OFF\n8 1 0\n0 0\n" + cube_vertices.substr(6) + "3 0 1 2\n",
+         "line 3 (\"0 0\"): a vertex line starts with three numbers"},
+        {std::string("OFF\n8 1 0\n") + '\0' + cube_vertices + "3 0 1 2\n", "it holds a NUL byte"},
+        {"8 1 0\n" + cube_vertices + "3 0 1 2\n", "it starts with its keyword"},
+    };
+    for (const auto& [text, problem] : offs) {
+        const TemporaryMesh file("face_" + std::to_string(++number) + ".off", text);
+        INFO(text);
+        CHECK_THAT(error_of(file.path()), Contains("cannot be read as .off: " + problem));
+    }
+    const TemporaryMesh good_off(
+        "good.off", "OFF\n# a cube\n8 2 0\n\n" + cube_vertices + "3 0 1 2 255 0 0\n4 4 5 7 6\n");
+    CHECK(read_mesh_hull(good_off.path()).vertices.size() == 8);
+    const TemporaryMesh off_many("many.off", "OFF\n200001 1 0\n" + cube_vertices);
+    CHECK_THAT(error_of(off_many.path()), Contains("announces 200001 vertices, more than the"));
+
+    // A GLB chunk longer than the file (a 3.9 GB JSON chunk in 848 bytes).
+    std::string glb = "glTF";
+    const auto word = [&glb](std::uint32_t value) {
+        for (int i = 0; i < 4; ++i) glb += static_cast<char>((value >> (8 * i)) & 0xFFU);
+    };
+    const std::string json = R"({"asset": {"version": "2.0"}})";
+    word(2);
+    word(static_cast<std::uint32_t>(12 + 8 + json.size()));
+    word(0xEA00028CU);
+    glb += "JSON" + json;
+    const TemporaryMesh chunk("chunk.glb", glb);
+    CHECK_THAT(error_of(chunk.path()),
+               Contains("cannot be read as .glb: chunk 1 announces 3925869196 bytes, but only 29 "
+                        "follow it"));
+
+    // Text that is no glTF: assimp's glTF readers both decline it, and it went to OpenGEX.
+    const TemporaryMesh gltf("opengex.gltf", "esset: {!.0vertexarray (attrib\x85\x90\x9c\xff");
+    CHECK_THAT(error_of(gltf.path()),
+               Contains("cannot be read as .gltf: none of assimp's .gltf readers recognises its "
+                        "contents"));
+}

@@ -12,7 +12,7 @@
 /// `extends = "base.toml"` (relative to the file) loads the base first and overrides it key by
 /// key: tables merge recursively, every other value (arrays, arrays of tables and inline tables
 /// `{ ... }`, which TOML defines as complete in themselves, included) replaces the base's. Bases
-/// may extend further bases; cycles are errors.
+/// may extend further bases, at most max_extends_depth levels; cycles are errors.
 
 #include "engine/scenario.hpp"
 #include "risk/sampling.hpp"
@@ -24,6 +24,10 @@
 #include <vector>
 
 namespace rockfall::scenario {
+
+/// The most base files one `extends` chain may follow (a file, its base, the base's base, ...
+/// count 1 per base); a longer chain is an error naming the file whose `extends` goes too deep.
+inline constexpr int max_extends_depth = 32;
 
 /// One problem found in a scenario file.
 struct ScenarioProblem {

@@ -154,6 +154,12 @@ stl_ascii("micron_rock.stl",
           [tuple(1e-6 * (x - c) / EDGE for x, c in zip(p, CENTRE)) for p in CORNERS], TRIANGLES)
 obj("far_away.obj", [(x + 1e6, y, z) for x, y, z in CORNERS], TRIANGLES,
     "a 0.2 m cube a thousand kilometres from the origin")
+# Found by fuzz/fuzz_mesh_off: an OFF file that declares more faces than it lists gets faces
+# without corners from assimp, whose triangulation then aborts on an assertion.
+write("short_faces.off", "OFF\n8 12 0\n" + "".join(f"{fmt(p)}\n" for p in CORNERS) +
+      "".join(f"3 {a} {b} {c}\n" for a, b, c in TRIANGLES[:10]))
+# A PLY face naming a vertex past the end, which assimp passes on as it is.
+ply("bad_index.ply", CORNERS, TRIANGLES[:11] + [(0, 1, 8)])
 write("garbage.stl", "this is not an STL file, neither ASCII nor binary\n" * 3)
 write("garbage.ply", "not a ply header\n1 2 3\n")
 write("unknown.xyz", "0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
