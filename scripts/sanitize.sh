@@ -14,6 +14,9 @@ cmake --build build-asan -j "$jobs"
 # detect_leaks: LeakSanitizer checks at exit (the default on Linux x86-64, stated here).
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
-export LSAN_OPTIONS="print_suppressions=0${ROCKFALL_LSAN_SUPPRESSIONS:+:suppressions=$ROCKFALL_LSAN_SUPPRESSIONS}"
+# The suppressions cover libassimp alone (scripts/lsan-suppressions.txt says why); another file
+# can be given in ROCKFALL_LSAN_SUPPRESSIONS.
+suppressions=${ROCKFALL_LSAN_SUPPRESSIONS:-$PWD/scripts/lsan-suppressions.txt}
+export LSAN_OPTIONS="print_suppressions=0:suppressions=$suppressions"
 cd build-asan
 ctest --output-on-failure -j "$jobs" "$@"

@@ -131,8 +131,13 @@ struct Numerics {
 struct Cluster {
     /// Grain sizes (volume-equivalent diameters) and their number or solid volume.
     shapes::Grading grading;
-    /// Family, density and material of every cluster rock; its size is the drawn one.
-    RockSpec rock;
+    /// Family (default massive), density and material of every cluster rock; its size is the
+    /// drawn one.
+    RockSpec rock = [] {
+        RockSpec spec;
+        spec.kind = shapes::RockKind::massive;
+        return spec;
+    }();
     /// The box at the top of the first segment.
     shapes::ReleaseBox box;
     /// Time the packed rocks settle in the closed box before the gate opens, s (> 0).
