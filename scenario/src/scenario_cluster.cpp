@@ -44,7 +44,7 @@ void check_cluster(Checker& c, const engine::Scenario& s, bool profile_ok) {
     }
     if (!profile_ok) return;
     try {
-        shapes::release_box_region(shapes::Slope(s.slope), cluster.box);
+        shapes::release_box_region(shapes::Slope(profile_only(s.slope)), cluster.box);
     } catch (const std::exception& error) {
         c.fail("cluster.box", "[cluster.box]", error.what());
     }

@@ -65,7 +65,7 @@ void read_lining(TableReader& slope_reader, shapes::SlopeSpec& slope) {
 void check_lining(Checker& c, const shapes::SlopeSpec& spec, bool profile_ok) {
     if (!spec.lining) return;
     const std::optional<shapes::Slope> slope =
-        profile_ok ? std::optional<shapes::Slope>(std::in_place, spec) : std::nullopt;
+        profile_ok ? std::optional<shapes::Slope>(std::in_place, profile_only(spec)) : std::nullopt;
     const shapes::Slope* built = slope ? &*slope : nullptr;
     const shapes::Lining& lining = *spec.lining;
     check_kind(

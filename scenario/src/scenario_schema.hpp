@@ -179,6 +179,21 @@ std::string toml_string(std::string_view text);
 std::string with_unit(const std::string& value, std::string_view unit);
 
 // Collects range and cross-field problems of a filled struct as ScenarioProblems.
+// The profile alone (segments, width, thickness) without bars, side walls or wall, which may
+// be invalid while the profile is valid (they are reported elsewhere): what the checks that
+// need a built shapes::Slope may build once the profile's fields are valid.
+inline shapes::SlopeSpec profile_only(const shapes::SlopeSpec& slope) {
+    shapes::SlopeSpec profile;
+    profile.segments = slope.segments;
+    profile.width = slope.width;
+    profile.thickness = slope.thickness;
+    profile.side_walls.enabled = false;
+    profile.bars.enabled = false;
+    profile.bars.segments.clear();
+    profile.wall.enabled = false;
+    return profile;
+}
+
 class Checker {
   public:
     Checker(const SourceMap* sources, std::vector<ScenarioProblem>& problems)

@@ -131,15 +131,7 @@ void read_terrain(TableReader& slope_reader, shapes::SlopeSpec& slope) {
 void check_terrain(Checker& c, const engine::Scenario& s, bool profile_ok) {
     if (!s.slope.terrain || !profile_ok) return;
     const shapes::Terrain& terrain = *s.slope.terrain;
-    // The profile alone (bars and walls may be invalid: they are reported elsewhere).
-    shapes::SlopeSpec profile_only;
-    profile_only.segments = s.slope.segments;
-    profile_only.width = s.slope.width;
-    profile_only.thickness = s.slope.thickness;
-    profile_only.side_walls.enabled = false;
-    profile_only.bars.enabled = false;
-    profile_only.wall.enabled = false;
-    const shapes::Slope slope(profile_only);
+    const shapes::Slope slope(profile_only(s.slope));
 
     // Coordinates read in single precision may miss a boundary by their round-off.
     const double half = 0.5 * s.slope.width;

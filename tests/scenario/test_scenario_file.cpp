@@ -433,6 +433,23 @@ TEST_CASE("a lining is read, checked and written back", "[scenario][scenario][li
     }
 }
 
+TEST_CASE("a cluster or lining on a slope whose wall does not fit is reported, not built",
+          "[scenario][scenario][lining][errors]") {
+    // Found by fuzz_scenario: the cluster's box check built the whole slope, whose wall past
+    // the end of the run-out failed the Slope's assertion.
+    const std::string text =
+        "[[slope.segments]]\nlength = 1.82\nangle_deg = 45.0\n"
+        "[[slope.segments]]\nlength = 1.82\nangle_deg = 0.0\n"
+        "[slope]\nwidth = 0.6\n[slope.wall]\ndistance_from_toe = 5.0\n"
+        "[slope.lining.spheres]\n[cluster]\ncount = 10\n";
+    try {
+        rockfall::scenario::parse_scenario(text, "cluster.toml");
+        FAIL("no error");
+    } catch (const ScenarioError& error) {
+        CHECK_THAT(error.what(), Contains("slope.wall.distance_from_toe"));
+    }
+}
+
 TEST_CASE("angle bars and rock size must fit the slope", "[scenario][scenario][errors]") {
     const ScenarioError error = parse_error(R"(
 [slope]
