@@ -289,6 +289,11 @@ std::optional<WallForce> resting_wall_force(const RigidWallContact& contact, dou
 
 // Phase 4 (after the physics step): load cells, recorders and stop rules.
 void Run::record(double dt) {
+    const bool any_rigid = std::any_of(rocks_.begin(), rocks_.end(), [](const RockRun& rock) {
+        return rock.phase != Phase::gone && rock.rigid_wall;
+    });
+    const std::vector<RigidWallContact> rigid =
+        any_rigid ? world_.rigid_wall_contacts() : std::vector<RigidWallContact>();
     for (std::size_t i = 0; i < rocks_.size(); ++i) {
         RockRun& rock = rocks_[i];
         if (rock.phase == Phase::gone) {
@@ -299,7 +304,7 @@ void Run::record(double dt) {
         const double gap = surface_gap(slope_, rock.geometry, body);
         bool holding = false;
         if (rock.rigid_wall) {
-            const RigidWallContact contact = world_.rigid_wall_contact(rock.body);
+            const RigidWallContact& contact = rigid[static_cast<std::size_t>(rock.body)];
             rock.wall_force = resting_wall_force(contact, dt);
             holding = contact.touching;
             if (!contact.touching) {

@@ -142,6 +142,17 @@ struct World::Impl {
         dispatcher.setNearCallback(&near_callback);
     }
 
+    // A static box with `material`, not yet in the world.
+    StaticSolid make_solid(const shapes::OrientedBox& box, const Material& material) {
+        StaticSolid solid;
+        solid.shape = make_box_shape(box);
+        const btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, solid.shape.get());
+        solid.body = std::make_unique<btRigidBody>(info);
+        solid.body->setWorldTransform(to_bt(box.rotation, box.center));
+        attach_material(*solid.body, material, materials.emplace_back());
+        return solid;
+    }
+
     // Bullet's default pools hold 4096 manifolds and algorithms, cleared at every world's
     // construction; a run needs a few per rock (more spill into the heap).
     static btDefaultCollisionConstructionInfo pool_sizes(std::size_t rock_count) {
@@ -207,13 +218,7 @@ World::World(const Scenario& scenario, const shapes::Slope& slope)
         if (replaced_by_terrain) {
             continue;
         }
-        StaticSolid solid;
-        solid.shape = make_box_shape(box);
-        const btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, solid.shape.get());
-        solid.body = std::make_unique<btRigidBody>(info);
-        solid.body->setWorldTransform(to_bt(box.rotation, box.center));
-        attach_material(*solid.body, material_of(scenario.materials, box.role),
-                        impl_->materials.emplace_back());
+        StaticSolid solid = impl_->make_solid(box, material_of(scenario.materials, box.role));
         if (box.role == shapes::SurfaceRole::reaction_wall) {
             solid.body->setUserIndex3(kWallTag);
             impl_->wall = solid.body.get();
@@ -306,6 +311,7 @@ int World::add_rock(const shapes::RockGeometry& geometry, const RockSpec& spec,
     attach_material(*rock.body, spec.material, material);
     material.rolling_lever = 0.5 * geometry.nominal_size;
 
+    rock.body->setUserIndex(static_cast<int>(impl_->rocks.size()));
     impl_->world.addRigidBody(rock.body.get());
     rock.in_world = true;
     impl_->rocks.push_back(std::move(rock));
@@ -320,12 +326,7 @@ void World::remove_rock(int rock) {
 }
 
 int World::add_static_box(const shapes::OrientedBox& box, const Material& material) {
-    StaticSolid solid;
-    solid.shape = make_box_shape(box);
-    const btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, solid.shape.get());
-    solid.body = std::make_unique<btRigidBody>(info);
-    solid.body->setWorldTransform(to_bt(box.rotation, box.center));
-    attach_material(*solid.body, material, impl_->materials.emplace_back());
+    StaticSolid solid = impl_->make_solid(box, material);
     impl_->world.addRigidBody(solid.body.get());
     impl_->temporary.push_back(std::move(solid));
     return static_cast<int>(impl_->temporary.size()) - 1;
@@ -343,25 +344,29 @@ void World::set_rigid_wall_contact(int rock, bool rigid) {
     impl_->rocks[static_cast<std::size_t>(rock)].body->setUserIndex3(rigid ? kRigidWallTag : -1);
 }
 
-RigidWallContact World::rigid_wall_contact(int rock) const {
-    RigidWallContact out;
-    const btRigidBody* body = impl_->rocks[static_cast<std::size_t>(rock)].body.get();
-    if (!impl_->wall || body->getUserIndex3() != kRigidWallTag) {
+std::vector<RigidWallContact> World::rigid_wall_contacts() const {
+    std::vector<RigidWallContact> out(impl_->rocks.size());
+    if (!impl_->wall) {
         return out;
     }
+    // One pass over the manifolds for every rock; a rock body's user index is its rock index.
     btCollisionDispatcher& dispatcher = impl_->dispatcher;
     for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
         const btPersistentManifold* manifold = dispatcher.getInternalManifoldPointer()[m];
-        const bool rock_is_a = manifold->getBody0() == body && manifold->getBody1() == impl_->wall;
-        const bool rock_is_b = manifold->getBody1() == body && manifold->getBody0() == impl_->wall;
-        if (!rock_is_a && !rock_is_b) {
+        const bool rock_is_a = manifold->getBody1() == impl_->wall;
+        if (!rock_is_a && manifold->getBody0() != impl_->wall) {
             continue;
         }
+        const btCollisionObject* body = rock_is_a ? manifold->getBody0() : manifold->getBody1();
+        if (body->getUserIndex3() != kRigidWallTag) {
+            continue;
+        }
+        RigidWallContact& contact = out[static_cast<std::size_t>(body->getUserIndex())];
         // Bullet's normal points from body B to body A; the impulse acts on A along it.
         const double sign = rock_is_a ? 1.0 : -1.0;
         for (int i = 0; i < manifold->getNumContacts(); ++i) {
             const btManifoldPoint& point = manifold->getContactPoint(i);
-            out.touching = true;
+            contact.touching = true;
             // A point beyond the processing threshold (a separated one: no speculative
             // contacts) was not solved this step and keeps the impulse of its last solve.
             if (point.getDistance() > manifold->getContactProcessingThreshold()) {
@@ -369,17 +374,19 @@ RigidWallContact World::rigid_wall_contact(int rock) const {
             }
             const Vec3 normal = sign * to_eigen(point.m_normalWorldOnB);
             const double normal_impulse = point.m_appliedImpulse;
-            out.impulse +=
+            contact.impulse +=
                 normal_impulse * normal +
                 sign * (point.m_appliedImpulseLateral1 * to_eigen(point.m_lateralFrictionDir1) +
                         point.m_appliedImpulseLateral2 * to_eigen(point.m_lateralFrictionDir2));
-            out.normal_impulse += normal_impulse;
-            out.point += normal_impulse * to_eigen(point.getPositionWorldOnB());
-            out.normal = normal;
+            contact.normal_impulse += normal_impulse;
+            contact.point += normal_impulse * to_eigen(point.getPositionWorldOnB());
+            contact.normal = normal;
         }
     }
-    if (out.normal_impulse > 0.0) {
-        out.point /= out.normal_impulse;
+    for (RigidWallContact& contact : out) {
+        if (contact.normal_impulse > 0.0) {
+            contact.point /= contact.normal_impulse;
+        }
     }
     return out;
 }

@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include <memory>
+#include <vector>
 
 namespace rockfall::engine {
 
@@ -61,8 +62,9 @@ class World {
     // Whether Bullet's rigid contact holds the rock against the wall (a resting contact), or
     // the caller's compliant law (an impact; the default).
     void set_rigid_wall_contact(int rock, bool rigid);
-    // The rigid wall contact of the last step (empty impulse when the contact is compliant).
-    RigidWallContact rigid_wall_contact(int rock) const;
+    // The rigid wall contact of every rock in the last step, indexed by rock (empty for a rock
+    // whose contact is compliant or that does not touch the wall), in one pass.
+    std::vector<RigidWallContact> rigid_wall_contacts() const;
     // Lets Bullet put a rock to sleep with its island when it has stayed still (a rock at
     // rest kept as an obstacle), or keeps it awake (a moving rock; the default). A sleeping
     // rock wakes when a moving body touches it.
