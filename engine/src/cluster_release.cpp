@@ -28,7 +28,6 @@ std::vector<PlacedRock> cluster_rocks(const shapes::Slope& slope, const Cluster&
         PlacedRock& rock = rocks.emplace_back();
         rock.spec.rock = cluster.rock;
         rock.spec.rock.size = size;
-        rock.spec.release.random_orientation = true;
         rock.geometry = rock.spec.rock.geometry();
         rock.initial.orientation =
             uniform_rotation(random.uniform(), random.uniform(), random.uniform());
