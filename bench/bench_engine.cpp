@@ -4,6 +4,7 @@
 // near-wall step everywhere. Prints the machine, the rates and the ratios a/b and a/c.
 
 #include "bare_bullet.hpp"
+#include "bench_machine.hpp"
 #include "scenario/scenario_file.hpp"
 
 #include "engine/simulation.hpp"
@@ -30,27 +31,6 @@
 namespace {
 
 using namespace rockfall;
-
-#ifndef ROCKFALL_BUILD_TYPE
-#define ROCKFALL_BUILD_TYPE "unknown"
-#endif
-
-// Wall-clock (steady_clock) and CPU time of this thread: the machine is shared, so the CPU
-// time shows how much of the wall time went to others.
-struct Stopwatch {
-    std::chrono::steady_clock::time_point wall_start = std::chrono::steady_clock::now();
-    double cpu_start = thread_cpu_seconds();
-
-    static double thread_cpu_seconds() {
-        timespec ts{};
-        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-        return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-    }
-    double wall() const {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    }
-    double cpu() const { return thread_cpu_seconds() - cpu_start; }
-};
 
 // One trajectory as a method ran it.
 struct Sample {
@@ -91,24 +71,6 @@ struct Tally {
     double simulated_rate() const { return simulated / wall; }
 };
 
-std::string first_line_with(const std::filesystem::path& file, const std::string& key) {
-    std::ifstream in(file);
-    for (std::string line; std::getline(in, line);) {
-        if (line.rfind(key, 0) == 0) {
-            const auto colon = line.find(':');
-            return colon == std::string::npos ? line : line.substr(colon + 2);
-        }
-    }
-    return "unknown";
-}
-
-std::string load_average() {
-    std::ifstream in("/proc/loadavg");
-    std::string one, five, fifteen;
-    in >> one >> five >> fifteen;
-    return one + " " + five + " " + fifteen + " (1, 5, 15 min)";
-}
-
 double median(std::vector<double> values) {
     if (values.empty()) {
         return 0.0;
@@ -116,21 +78,6 @@ double median(std::vector<double> values) {
     const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
     std::nth_element(values.begin(), middle, values.end());
     return *middle;
-}
-
-void print_machine() {
-    std::cout << "machine\n"
-              << "  cores (nproc):  " << std::thread::hardware_concurrency() << "\n"
-              << "  CPU:            " << first_line_with("/proc/cpuinfo", "model name") << "\n"
-              << "  compiler:       " << __VERSION__ << "\n"
-              << "  build type:     " << ROCKFALL_BUILD_TYPE
-#ifdef NDEBUG
-              << " (asserts off)\n"
-#else
-              << " (asserts on)\n"
-#endif
-              << "  Bullet:         " << btGetVersion()
-              << (sizeof(btScalar) == 8 ? " double precision\n" : " single precision\n");
 }
 
 void print_tally(const std::string& label, const Tally& t) {
@@ -185,7 +132,7 @@ struct Results {
 };
 
 void run_engine(const engine::Scenario& scenario, std::uint64_t seed, bool in_subset, Results& r) {
-    const Stopwatch watch;
+    const bench::Stopwatch watch;
     const engine::Outcome outcome = engine::simulate(scenario, seed);
     const double wall = watch.wall(), cpu = watch.cpu();
     const engine::RockOutcome& rock = outcome.rocks.front();
@@ -209,7 +156,7 @@ void run_engine(const engine::Scenario& scenario, std::uint64_t seed, bool in_su
 }
 
 void run_bare(const engine::Scenario& scenario, std::uint64_t seed, double dt, Tally& tally) {
-    const Stopwatch watch;
+    const bench::Stopwatch watch;
     const bench::BareRun bare = bench::run_bare_bullet(scenario, seed, dt);
     const double wall = watch.wall(), cpu = watch.cpu();
     tally.add({wall, cpu, bare.stop_time, bare.steps, bare.reach, bare.stop,
@@ -297,14 +244,14 @@ void print_report(const engine::Scenario& base, const Options& options, const Re
 }
 
 int run(const Options& options) {
-    print_machine();
+    bench::print_machine(ROCKFALL_BUILD_TYPE);
     const engine::Scenario base = scenario::load_scenario(options.scenario).scenario;
     Results results;
-    results.load_start = load_average();
+    results.load_start = bench::load_average();
     measure_coarse(base, options, results);
-    results.load_after_ab = load_average();
+    results.load_after_ab = bench::load_average();
     measure_fine(base, options, results);
-    results.load_end = load_average();
+    results.load_end = bench::load_average();
     print_report(base, options, results);
     return 0;
 }

@@ -2,15 +2,23 @@
 
 #include "cluster_release.hpp"
 
+#include "shapes/generators.hpp"
 #include "shapes/grading.hpp"
 #include "shapes/random.hpp"
 #include "shapes/release_box.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
 
 namespace rockfall::engine {
 namespace {
 
 // The cluster's own stream: apart from the release orientations of the scenario's rocks.
 constexpr std::uint64_t kClusterStream = 0x636c7573746572ULL;  // "cluster"
+
+// The stream of the drawn rocks' shapes when the cluster has a target sphericity.
+constexpr std::uint64_t kShapeStream = 0x7368617065ULL;  // "shape"
 
 constexpr double kWallThickness = 0.01;  // m
 
@@ -21,20 +29,48 @@ std::vector<PlacedRock> cluster_rocks(const shapes::Slope& slope, const Cluster&
     std::mt19937_64 generator = shapes::make_generator(seed ^ kClusterStream);
     const std::vector<double> sizes = shapes::cluster_sizes(cluster.grading, generator);
     std::vector<PlacedRock> rocks;
-    rocks.reserve(sizes.size());
+    rocks.reserve(sizes.size() + cluster.marked.size());
     std::vector<double> radii;
+    std::vector<std::optional<shapes::Vec2>> spots;
     Random random(seed ^ kClusterStream);
-    for (const double size : sizes) {
+    const auto add = [&](const RockSpec& spec) -> PlacedRock& {
         PlacedRock& rock = rocks.emplace_back();
-        rock.spec.rock = cluster.rock;
-        rock.spec.rock.size = size;
-        rock.geometry = rock.spec.rock.geometry();
-        rock.initial.orientation =
-            uniform_rotation(random.uniform(), random.uniform(), random.uniform());
+        rock.spec.rock = spec;
+        rock.geometry = spec.geometry();
+        // Three uniforms for every rock, so a marked rock's orientation does not shift the
+        // stream of those after it.
+        const double u1 = random.uniform();
+        const double u2 = random.uniform();
+        const double u3 = random.uniform();
+        rock.initial.orientation = uniform_rotation(u1, u2, u3);
         radii.push_back(rock.geometry.bounding_radius);
+        spots.emplace_back();
+        return rock;
+    };
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+        RockSpec spec = cluster.rock;
+        spec.size = sizes[i];
+        if (cluster.sphericity > 0.0) {
+            const std::uint64_t shape_seed = (seed ^ kShapeStream) + i;
+            spec.kind = shapes::RockKind::custom;
+            spec.shape = std::make_shared<const shapes::CustomShape>(shapes::CustomShape{
+                "sphericity " + std::to_string(cluster.sphericity).substr(0, 4),
+                shapes::rock_with_sphericity(cluster.sphericity, shape_seed).hull});
+        }
+        add(spec);
+    }
+    const Eigen::Matrix3d frame =
+        surface_frame(slope, slope.point_at_distance(cluster.box.start).x());
+    for (const MarkedRock& marked : cluster.marked) {
+        PlacedRock& rock = add(marked.rock);
+        rock.spec.name = marked.name;
+        if (marked.orientation_deg) {
+            rock.initial.orientation = orientation_in_frame(frame, *marked.orientation_deg);
+        }
+        spots.back() = shapes::Vec2(marked.along, marked.across);
     }
     const std::vector<Vec3> centres =
-        shapes::pack_release_box(slope, cluster.box, radii, generator);
+        shapes::pack_release_box(slope, cluster.box, radii, generator, spots);
     for (std::size_t i = 0; i < rocks.size(); ++i) {
         rocks[i].initial.position = centres[i];
     }

@@ -23,7 +23,8 @@ struct PlacedRock {
 };
 
 // The cluster's rocks: sizes from cluster_sizes, each a rock of the cluster's family at that
-// size in a random orientation, placed by pack_release_box (bounding spheres), all from
+// size in a random orientation, then the marked rocks (named, dropped at their spots, in their
+// own orientation or a random one), placed by pack_release_box (bounding spheres), all from
 // `seed`. Throws shapes::PackingError when they do not fit the box.
 std::vector<PlacedRock> cluster_rocks(const shapes::Slope& slope, const Cluster& cluster,
                                       std::uint64_t seed);

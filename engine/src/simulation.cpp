@@ -6,6 +6,7 @@
 #include "state_hash.hpp"
 #include "step_size.hpp"
 #include "stop_rule.hpp"
+#include "wall_substep.hpp"
 #include "world.hpp"
 
 #include "engine/wall_contact.hpp"
@@ -20,16 +21,6 @@
 
 namespace rockfall::engine {
 namespace {
-
-// Approach speeds below this at first touch make a resting contact with the wall, m/s: the
-// wall law's own floor (WallContactLaw::kMinContactSpeed), below which it has no impact to
-// resolve.
-constexpr double kRestingContactSpeed = WallContactLaw::kMinContactSpeed;
-
-// A compliant contact that lasts this many times the duration of a free impact at its
-// first-touch speed is held against the wall (by the rocks behind it, or its own weight on a
-// wall leaning over it): a resting contact from then on.
-constexpr double kRestingContactDurations = 2.0;
 
 // Where a rock is in its run: moving (the run waits for it), at rest and kept in the world as
 // an obstacle until the run ends (it moves again if something pushes it), or gone (left the
@@ -60,17 +51,12 @@ struct RockRun {
     BodyState body_state;
     RockState state;
     double gap = 0.0;
-    // Wall contact of the coming step.
+    // Wall contact of the coming step: the approach and force (whole-world stepping), or its
+    // sub-steps (per-rock stepping) when the rock may touch the wall within the step.
     WallApproach approach;
     std::optional<WallForce> wall_force;
-    // Whether the rock overlapped the wall before the last step: the contact's speed and step
-    // are fixed at first touch, not again while the overlap lingers after the force vanished.
-    bool touching = false;
-    // Fine step fixed at first touch for the whole contact, the contact's start time and how
-    // long a free impact at its first-touch speed would last, s.
-    double contact_step = 0.0;
-    double contact_start = 0.0;
-    double contact_duration = 0.0;
+    std::optional<WallSubsteps> substeps;
+    WallContactTrack track;
     // Whether Bullet's rigid contact holds the rock against the wall (a resting contact) rather
     // than the compliant law (an impact).
     bool rigid_wall = false;
@@ -91,7 +77,11 @@ class Run {
     Outcome execute();
 
   private:
+    WallRock wall_rock(RockRun& rock) {
+        return {rock.geometry, rock.mass, rock.inertia, *rock.law, rock.track};
+    }
     void wall_contacts();
+    void substep_wall_contacts();
     StepChoice step_size() const;
     void record(double dt);
     void stop(std::size_t index, StopReason reason);
@@ -109,6 +99,8 @@ class Run {
     double time_ = 0.0;
     // Rocks still moving: the run ends when none is.
     std::size_t moving_count_ = 0;
+    // Rocks out of the world.
+    std::int64_t gone_count_ = 0;
 };
 
 Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options)
@@ -158,6 +150,7 @@ Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options
         rock.gap = surface_gap(slope_, rock.geometry, initial);
         rock.recorder.start(rock.state, rock.gap);
         outcome_.rocks[i].size = spec.rock.size;
+        outcome_.rocks[i].name = spec.name;
     }
     moving_count_ = rocks_.size();
 }
@@ -185,6 +178,7 @@ Outcome Run::execute() {
         world_.step(step.dt);
         time_ += step.dt;
         ++(step.fine ? outcome_.fine_steps : outcome_.coarse_steps);
+        outcome_.body_steps += static_cast<std::int64_t>(rocks_.size()) - gone_count_;
         record(step.dt);
     }
     for (std::size_t i = 0; i < rocks_.size(); ++i) {
@@ -201,6 +195,10 @@ Outcome Run::execute() {
 // external force for the coming step (Bullet clears forces after each step). A slow touch, or
 // a contact that outlasts an impact, becomes a resting contact that Bullet holds rigidly.
 void Run::wall_contacts() {
+    if (scenario_.numerics.wall_stepping == WallStepping::per_rock) {
+        substep_wall_contacts();
+        return;
+    }
     const std::optional<shapes::OrientedBox>& wall = slope_.wall();
     for (RockRun& rock : rocks_) {
         rock.wall_force.reset();
@@ -209,40 +207,61 @@ void Run::wall_contacts() {
         }
         const BodyState& s = rock.body_state;
         rock.approach = wall_approach(*wall, rock.geometry, s, scenario_.numerics.time_step);
-        if (rock.approach.gap > 0.0 && !rock.touching) {
+        if (rock.approach.gap > 0.0 && !rock.track.touching) {
             continue;
         }
-        const std::optional<WallOverlap> overlap =
-            wall_overlap(*wall, rock.geometry, s.position, s.orientation);
-        const bool first_touch = overlap && !rock.touching;
-        rock.touching = overlap.has_value();
-        if (!overlap) {
-            continue;
-        }
-        if (overlap->depth > 0.5 * rock.geometry.nominal_size) {
+        const WallContactAt at =
+            wall_contact_at(*wall, wall_rock(rock), s, time_,
+                            scenario_.wall_contact.steps_per_contact, scenario_.numerics.time_step);
+        if (at.kind == WallContactAt::Kind::inside) {
             rock.inside_wall = true;
+        } else if (at.kind == WallContactAt::Kind::resting) {
+            make_rigid(rock);
+        } else if (at.kind == WallContactAt::Kind::force) {
+            rock.wall_force = at.force;
+            world_.apply_force(rock.body, at.force.force, at.force.point);
+        }
+    }
+}
+
+// Phase 1 with per-rock stepping: each rock that may touch the wall within the coming step
+// has its wall contact sub-stepped on its own, at the contact's fine step; the rigid-body step
+// applies the resulting impulse as a constant force and torque (its momentum change is the
+// load cell's impulse), and the pose correction after the step (record) puts the rock where
+// the sub-steps did. Everything else stays at the coarse step.
+void Run::substep_wall_contacts() {
+    const std::optional<shapes::OrientedBox>& wall = slope_.wall();
+    const double dt = scenario_.numerics.time_step;
+    const Vec3 gravity(0.0, 0.0, -scenario_.gravity);
+    for (RockRun& rock : rocks_) {
+        rock.substeps.reset();
+        rock.wall_force.reset();
+        if (rock.phase == Phase::gone || !wall || rock.rigid_wall) {
             continue;
         }
-        const Vec3 point_velocity =
-            s.velocity + s.angular_velocity.cross(overlap->point - s.position);
-        if (first_touch) {
-            const double normal_speed = std::max(0.0, -point_velocity.dot(overlap->normal));
-            if (normal_speed < kRestingContactSpeed) {
-                make_rigid(rock);
+        const BodyState& s = rock.body_state;
+        if (!rock.track.touching && !rock.load_cell.in_contact()) {
+            const WallApproach approach = wall_approach(*wall, rock.geometry, s, dt);
+            // Within reach of the wall during the step, with a reserve for what gravity adds.
+            if (approach.gap > approach.closing_speed * dt + scenario_.gravity * dt * dt + 1e-4) {
                 continue;
             }
-            rock.law->begin_contact(normal_speed);
-            rock.contact_step =
-                fine_step(*rock.law, normal_speed, scenario_.wall_contact.steps_per_contact,
-                          scenario_.numerics.time_step);
-            rock.contact_start = time_;
-            rock.contact_duration = rock.law->contact_duration(normal_speed);
-        } else if (time_ - rock.contact_start > kRestingContactDurations * rock.contact_duration) {
-            make_rigid(rock);
+        }
+        WallSubsteps& substeps = rock.substeps.emplace(
+            substep_wall(*wall, wall_rock(rock), s, time_, dt, gravity,
+                         scenario_.wall_contact.steps_per_contact, rock.load_cell));
+        outcome_.fine_steps += substeps.substeps;
+        if (substeps.end == WallContactAt::Kind::free) {
+            // It did not touch the wall: nothing to apply or correct.
+            rock.substeps.reset();
             continue;
         }
-        rock.wall_force = rock.law->force(*overlap, point_velocity);
-        world_.apply_force(rock.body, rock.wall_force->force, rock.wall_force->point);
+        if (substeps.end == WallContactAt::Kind::inside) {
+            rock.inside_wall = true;
+        } else if (substeps.end == WallContactAt::Kind::resting) {
+            make_rigid(rock);
+        }
+        world_.apply_impulse_over_step(rock.body, substeps.impulse, substeps.angular_impulse, dt);
     }
 }
 
@@ -256,14 +275,17 @@ void Run::make_rigid(RockRun& rock) {
 // too slow to make an impact, take the coarse step.
 StepChoice Run::step_size() const {
     const double coarse = scenario_.numerics.time_step;
+    if (scenario_.numerics.wall_stepping == WallStepping::per_rock) {
+        return {coarse, false};
+    }
     const int steps_per_contact = scenario_.wall_contact.steps_per_contact;
     double dt = coarse;
     for (const RockRun& rock : rocks_) {
         if (rock.phase == Phase::gone || !rock.law || rock.rigid_wall) {
             continue;
         }
-        if (rock.touching || rock.load_cell.in_contact()) {
-            dt = std::min(dt, rock.contact_step);
+        if (rock.track.touching || rock.load_cell.in_contact()) {
+            dt = std::min(dt, rock.track.step);
         } else if (rock.approach.closing_speed >= kRestingContactSpeed) {
             dt = std::min(dt, approach_step(*rock.law, rock.approach, steps_per_contact, coarse));
         }
@@ -299,6 +321,10 @@ void Run::record(double dt) {
         if (rock.phase == Phase::gone) {
             continue;
         }
+        if (rock.substeps) {
+            world_.shift_pose(rock.body, rock.substeps->position_shift,
+                              rock.substeps->rotation_shift);
+        }
         const BodyState body = world_.state(rock.body);
         const RockState after = rock_state(body, time_, rock.mass, rock.inertia);
         const double gap = surface_gap(slope_, rock.geometry, body);
@@ -309,11 +335,13 @@ void Run::record(double dt) {
             holding = contact.touching;
             if (!contact.touching) {
                 rock.rigid_wall = false;
-                rock.touching = false;
+                rock.track.touching = false;
                 world_.set_rigid_wall_contact(rock.body, false);
             }
         }
-        if (rock.wall_force || rock.load_cell.in_contact()) {
+        // Sub-steps fed the load cell themselves, unless a resting contact took over.
+        const bool recorded = rock.substeps && !rock.rigid_wall;
+        if (!recorded && (rock.wall_force || rock.load_cell.in_contact())) {
             rock.load_cell.record(dt, rock.wall_force, rock.state, after, holding);
         }
         rock.recorder.after_step(rock.state, rock.gap, after, gap);
@@ -375,6 +403,7 @@ void Run::stop(std::size_t index, StopReason reason) {
         --moving_count_;
     }
     rock.phase = Phase::gone;
+    ++gone_count_;
 }
 
 }  // namespace

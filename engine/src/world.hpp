@@ -72,6 +72,13 @@ class World {
 
     // Force (N) acting at a world point (m) during the next step only.
     void apply_force(int rock, const Vec3& force, const Vec3& point);
+    // Impulse (N s) through the centre of mass and angular impulse (N m s) spread evenly over
+    // the next step of dt seconds (a constant force and torque during it).
+    void apply_impulse_over_step(int rock, const Vec3& impulse, const Vec3& angular_impulse,
+                                 double dt);
+    // Moves a rock by `shift` (m) and turns it by the rotation vector `rotation` (rad, world
+    // frame, about its centre of mass), keeping its velocities.
+    void shift_pose(int rock, const Vec3& shift, const Vec3& rotation);
     // One step of dt seconds (stepSimulation(dt, 0): no sub-steps, no interpolation).
     void step(double dt);
 

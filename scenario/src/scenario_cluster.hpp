@@ -4,6 +4,7 @@
 // files").
 
 #include "scenario_reader.hpp"
+#include "scenario_rock_shape.hpp"
 #include "scenario_schema.hpp"
 
 #include "engine/scenario.hpp"
@@ -24,8 +25,10 @@ inline const Fields<shapes::Grading, 6> grading_fields{{
     {"d_max", &shapes::Grading::d_max, "m", closed(0.01, 10.0)},
 }};
 
-inline const Fields<engine::Cluster, 1> cluster_fields{{
+inline const Fields<engine::Cluster, 2> cluster_fields{{
     {"settle_time", &engine::Cluster::settle_time, "s", closed(0.01, 10.0)},
+    // 0: off; check_cluster also refuses (0, 0.5).
+    {"sphericity", &engine::Cluster::sphericity, "", closed(0.0, 0.95)},
 }};
 
 inline const Fields<shapes::ReleaseBox, 5> release_box_fields{{
@@ -36,13 +39,21 @@ inline const Fields<shapes::ReleaseBox, 5> release_box_fields{{
     {"floor", &shapes::ReleaseBox::floor, "m", non_negative()},
 }};
 
+// A marked rock's spot in the release box (its shape keys are a [[rocks]] entry's).
+inline const Fields<engine::MarkedRock, 2> marked_rock_fields{{
+    {"along", &engine::MarkedRock::along, "m", non_negative()},
+    {"across", &engine::MarkedRock::across, "m", any_finite()},
+}};
+
 // The families a cluster's rocks may take (a custom hull has no size to draw).
 inline constexpr std::array<shapes::RockKind, 3> cluster_kinds = {
     shapes::RockKind::sphere, shapes::RockKind::massive, shapes::RockKind::planar};
 
 // Reads [cluster] from the root table, if present. A scenario with a cluster and no [[rocks]]
 // has no other rocks (not the default one).
-void read_cluster(TableReader& root, engine::Scenario& scenario, bool has_rocks);
+// Its [[cluster.marked]] rocks take their shapes through `shape_cache`.
+void read_cluster(TableReader& root, engine::Scenario& scenario, bool has_rocks,
+                  RockShapeCache& shape_cache);
 
 // The cluster's ranges, its grading's rules and its box against the slope.
 void check_cluster(Checker& c, const engine::Scenario& scenario, bool profile_ok);

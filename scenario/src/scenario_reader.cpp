@@ -186,26 +186,36 @@ void read_material(TableReader& parent, std::string_view key, engine::Material& 
     with_table(parent, key, [&](TableReader& r) { read_fields(r, material, material_fields); });
 }
 
+// A string key naming one of `choices`; `value` keeps its default when the key is absent.
+template <typename E, std::size_t N>
+void read_enum(TableReader& r, std::string_view key, const std::array<EnumName<E>, N>& choices,
+               E& value) {
+    std::array<std::string_view, N> names;
+    for (std::size_t i = 0; i < N; ++i) names[i] = choices[i].name;
+    if (const auto index = read_choice(r, key, names)) value = choices[*index].value;
+}
+
 void read_wall_contact(TableReader& r, engine::WallContact& contact) {
-    std::array<std::string_view, wall_model_names.size()> names;
-    for (std::size_t i = 0; i < names.size(); ++i) names[i] = wall_model_names[i].name;
-    if (const auto index = read_choice(r, "model", names)) {
-        contact.model = wall_model_names[*index].value;
-    }
+    read_enum(r, "model", wall_model_names, contact.model);
     read_fields(r, contact, wall_contact_fields);
 }
 
 void read_rock(TableReader& r, engine::RockRelease& rock, RockShapeCache& shape_cache) {
-    std::array<std::string_view, all_rock_kinds.size()> names;
-    for (std::size_t i = 0; i < names.size(); ++i) names[i] = shapes::to_string(all_rock_kinds[i]);
-    if (const auto index = read_choice(r, "kind", names)) rock.rock.kind = all_rock_kinds[*index];
-    read_fields(r, rock.rock, rock_fields);
-    read_rock_shape(r, rock.rock, shape_cache);
-    read_material(r, "material", rock.rock.material);
+    read(r, "name", rock.name);
+    read_rock_spec(r, rock.rock, shape_cache);
     with_table(r, "release", [&](TableReader& s) { read_fields(s, rock.release, release_fields); });
 }
 
 }  // namespace
+
+void read_rock_spec(TableReader& r, engine::RockSpec& rock, RockShapeCache& shape_cache) {
+    std::array<std::string_view, all_rock_kinds.size()> names;
+    for (std::size_t i = 0; i < names.size(); ++i) names[i] = shapes::to_string(all_rock_kinds[i]);
+    if (const auto index = read_choice(r, "kind", names)) rock.kind = all_rock_kinds[*index];
+    read_fields(r, rock, rock_fields);
+    read_rock_shape(r, rock, shape_cache);
+    read_material(r, "material", rock.material);
+}
 
 void read_slope(TableReader& r, shapes::SlopeSpec& slope) {
     read_fields(r, slope, slope_fields);
@@ -250,7 +260,7 @@ engine::Scenario read_scenario(const toml::table& root, const std::string& file,
     with_table_array(r, "rocks", scenario.rocks, [&](TableReader& s, engine::RockRelease& rock) {
         read_rock(s, rock, shape_cache);
     });
-    read_cluster(r, scenario, r.contains("rocks"));
+    read_cluster(r, scenario, r.contains("rocks"), shape_cache);
     read_list(r, "stations", scenario.stations, "distances (m)",
               [&](const toml::node& item, const std::string& path) -> std::optional<double> {
                   if (std::optional<double> value = number_of(item)) return value;
@@ -259,8 +269,10 @@ engine::Scenario read_scenario(const toml::table& root, const std::string& file,
                       describe(item) + ": " + expectation("a number", station_unit, station_range));
                   return std::nullopt;
               });
-    with_table(r, "numerics",
-               [&](TableReader& s) { read_fields(s, scenario.numerics, numerics_fields); });
+    with_table(r, "numerics", [&](TableReader& s) {
+        read_fields(s, scenario.numerics, numerics_fields);
+        read_enum(s, "wall_stepping", wall_stepping_names, scenario.numerics.wall_stepping);
+    });
     r.finish();
     return scenario;
 }

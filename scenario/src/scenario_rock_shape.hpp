@@ -49,4 +49,14 @@ std::optional<std::vector<shapes::Vec3>> read_vertices(TableReader& r, const tom
 // diameter (or follows from long_axis). Problems are reported at their keys.
 void read_rock_shape(TableReader& r, engine::RockSpec& rock, RockShapeCache& cache);
 
+// Reads a rock's own keys from r's table (a [[rocks]] entry or a marked cluster rock): `kind`,
+// `size`, `density`, the custom-shape keys and [material].
+void read_rock_spec(TableReader& r, engine::RockSpec& rock, RockShapeCache& cache);
+
+// Checks a rock's own fields read by read_rock_spec, at `path` (e.g. "rocks[0]"): size,
+// density, material, a custom kind exactly with a shape, and a mean restitution with the wall
+// above 0. Returns whether its geometry can be built.
+bool check_rock_spec(Checker& c, const engine::Scenario& scenario, const engine::RockSpec& rock,
+                     const std::string& path);
+
 }  // namespace rockfall::scenario::detail

@@ -143,9 +143,23 @@ struct EnumName {
     E value;
 };
 
+// The name of `value` in `names`, "?" when it has none.
+template <typename E, std::size_t N>
+constexpr std::string_view name_of(const std::array<EnumName<E>, N>& names, E value) {
+    for (const EnumName<E>& entry : names) {
+        if (entry.value == value) return entry.name;
+    }
+    return "?";
+}
+
 inline constexpr std::array<EnumName<engine::WallContact::Model>, 2> wall_model_names{{
     {"hertz", engine::WallContact::Model::hertz},
     {"linear", engine::WallContact::Model::linear},
+}};
+
+inline constexpr std::array<EnumName<engine::WallStepping>, 2> wall_stepping_names{{
+    {"per_rock", engine::WallStepping::per_rock},
+    {"world", engine::WallStepping::world},
 }};
 
 inline constexpr std::array<shapes::RockKind, 3> all_rock_kinds{
@@ -171,6 +185,10 @@ class SourceMap {
 
 // Shortest text that reads back to the same double ("0.1", "2600", "1e-05").
 std::string format_number(double value);
+// "path[index]", the path of an array element in messages.
+inline std::string indexed(std::string_view path, std::size_t index) {
+    return std::string(path) + "[" + std::to_string(index) + "]";
+}
 // "[x, y, z]" with format_number.
 std::string format_vector(const engine::Vec3& value);
 // A TOML basic string: "text" with quotes, backslashes and control characters escaped.

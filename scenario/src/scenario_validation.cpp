@@ -4,6 +4,7 @@
 #include "scenario/scenario_file.hpp"
 #include "scenario_cluster.hpp"
 #include "scenario_lining.hpp"
+#include "scenario_rock_shape.hpp"
 #include "scenario_schema.hpp"
 #include "scenario_terrain.hpp"
 
@@ -105,10 +106,6 @@ std::string with_unit(const std::string& value, std::string_view unit) {
 
 namespace {
 
-std::string indexed(std::string_view path, std::size_t index) {
-    return std::string(path) + "[" + std::to_string(index) + "]";
-}
-
 // Facts about a valid profile that the cross-field rules need.
 struct Profile {
     // Distance along the surface from the crown to the end of the part a rock may start on:
@@ -163,9 +160,7 @@ void check_bars(Checker& c, const shapes::AngleBars& bars, std::size_t segment_c
 void check_rock(Checker& c, const engine::Scenario& s, std::size_t index, bool profile_ok) {
     const engine::RockRelease& rock = s.rocks[index];
     const std::string path = indexed("rocks", index);
-    const bool size_ok = c.check_fields(rock.rock, path, rock_fields);
-    const bool material_ok =
-        c.check_fields(rock.rock.material, path + ".material", material_fields);
+    const bool geometry_ok = check_rock_spec(c, s, rock.rock, path);
     const bool release_ok = c.check_fields(rock.release, path + ".release", release_fields);
     if (!release_ok || !profile_ok) return;
 
@@ -175,15 +170,8 @@ void check_rock(Checker& c, const engine::Scenario& s, std::size_t index, bool p
                "must be in [0, " + format_number(profile.inclined_length) +
                    ") so that the rock starts on the inclined part, above the toe");
     }
-    // A custom shape is what makes a rock custom (scenario files set both or neither).
-    const bool custom = rock.rock.kind == shapes::RockKind::custom;
-    if (custom != (rock.rock.shape != nullptr)) {
-        c.fail(path + ".kind", "\"" + std::string(shapes::to_string(rock.rock.kind)) + "\"",
-               custom ? "a custom rock needs a shape (mesh, catalogue with entry, or vertices)"
-                      : "a rock with a custom shape must be of kind custom");
-        return;
-    }
-    if (size_ok) {
+    if (geometry_ok) {
+        const bool custom = rock.rock.kind == shapes::RockKind::custom;
         // The bounding sphere keeps every orientation, random ones included, off the side walls.
         const double radius = rock.rock.geometry().bounding_radius;
         const double half_room = 0.5 * s.slope.width - radius;
@@ -201,14 +189,30 @@ void check_rock(Checker& c, const engine::Scenario& s, std::size_t index, bool p
                        format_number(radius) + " m)");
         }
     }
-    // The compliant wall contact takes its damping from the mean restitution (ln e,
-    // docs/scenarios.md).
-    const double mean_restitution =
-        0.5 * (rock.rock.material.restitution + s.materials.wall.restitution);
-    if (material_ok && s.slope.wall.enabled && mean_restitution <= 0.0) {
-        c.fail(path + ".material.restitution", format_number(rock.rock.material.restitution),
-               "must be > 0 when materials.wall.restitution is 0 (the wall contact's damping "
-               "needs a mean restitution > 0)");
+}
+
+// Names of named rocks ([[rocks]] and marked cluster rocks) are unique.
+void check_rock_names(Checker& c, const engine::Scenario& s) {
+    std::vector<std::pair<std::string, std::string>> named;  // name, path
+    for (std::size_t i = 0; i < s.rocks.size(); ++i) {
+        named.emplace_back(s.rocks[i].name, indexed("rocks", i) + ".name");
+    }
+    if (s.cluster) {
+        for (std::size_t i = 0; i < s.cluster->marked.size(); ++i) {
+            named.emplace_back(s.cluster->marked[i].name, indexed("cluster.marked", i) + ".name");
+        }
+    }
+    for (std::size_t i = 0; i < named.size(); ++i) {
+        if (named[i].first.empty()) continue;
+        for (std::size_t j = 0; j < i; ++j) {
+            if (named[j].first == named[i].first) {
+                c.fail(named[i].second, "\"" + named[i].first + "\"",
+                       "is already the name of " +
+                           named[j].second.substr(0, named[j].second.size() - 5) +
+                           ": rock names must be unique");
+                break;
+            }
+        }
     }
 }
 
@@ -259,6 +263,7 @@ std::vector<ScenarioProblem> find_problems(const engine::Scenario& s, const Sour
     }
     check_cluster(c, s, profile_ok);
     for (std::size_t i = 0; i < s.rocks.size(); ++i) check_rock(c, s, i, profile_ok);
+    check_rock_names(c, s);
     for (std::size_t i = 0; i < s.stations.size(); ++i) {
         const std::string path = indexed("stations", i);
         if (c.check(path, s.stations[i], station_unit, station_range) && profile_ok) {
@@ -272,6 +277,31 @@ std::vector<ScenarioProblem> find_problems(const engine::Scenario& s, const Sour
     }
     c.check_fields(s.numerics, "numerics", numerics_fields);
     return problems;
+}
+
+bool check_rock_spec(Checker& c, const engine::Scenario& s, const engine::RockSpec& rock,
+                     const std::string& path) {
+    const bool size_ok = c.check_fields(rock, path, rock_fields);
+    const bool material_ok = c.check_fields(rock.material, path + ".material", material_fields);
+    // A custom shape is what makes a rock custom (scenario files set both or neither).
+    const bool custom = rock.kind == shapes::RockKind::custom;
+    bool shape_ok = true;
+    if (custom != (rock.shape != nullptr)) {
+        c.fail(path + ".kind", "\"" + std::string(shapes::to_string(rock.kind)) + "\"",
+               custom ? "a custom rock needs a shape (mesh, catalogue with entry, or vertices)"
+                      : "a rock with a custom shape must be of kind custom");
+        shape_ok = false;
+    }
+    // The compliant wall contact takes its damping from the mean restitution (ln e,
+    // docs/scenarios.md).
+    const double mean_restitution =
+        0.5 * (rock.material.restitution + s.materials.wall.restitution);
+    if (material_ok && s.slope.wall.enabled && mean_restitution <= 0.0) {
+        c.fail(path + ".material.restitution", format_number(rock.material.restitution),
+               "must be > 0 when materials.wall.restitution is 0 (the wall contact's damping "
+               "needs a mean restitution > 0)");
+    }
+    return size_ok && shape_ok;
 }
 
 }  // namespace detail

@@ -57,11 +57,28 @@ class Writer {
     std::string out_;
 };
 
-std::string_view model_name(engine::WallContact::Model model) {
-    for (const auto& entry : detail::wall_model_names) {
-        if (entry.value == model) return entry.name;
+// A rock's family, or its hull itself so that the text stands alone (no mesh file to look
+// for).
+void write_shape(Writer& w, const engine::RockSpec& rock) {
+    if (rock.shape) {
+        w.line("shape_name", toml_string(rock.shape->name));
+        std::string points;
+        for (const shapes::Vec3& v : rock.shape->hull.vertices) {
+            points += "\n    " + value_text(engine::Vec3(v)) + ",";
+        }
+        w.line("vertices", "[" + points + "\n]");
+    } else {
+        w.line("kind", toml_string(shapes::to_string(rock.kind)));
     }
-    return "?";
+}
+
+// A rock's own keys (read_rock_spec) into the current table, its material as
+// [<table>.material].
+void write_rock_spec(Writer& w, const engine::RockSpec& rock, std::string_view table) {
+    write_shape(w, rock);
+    w.fields(rock, detail::rock_fields);
+    w.header(std::string(table) + ".material");
+    w.fields(rock.material, detail::material_fields);
 }
 
 }  // namespace
@@ -136,25 +153,13 @@ std::string format_scenario(const engine::Scenario& s) {
     }
 
     w.header("wall_contact");
-    w.line("model", toml_string(model_name(s.wall_contact.model)));
+    w.line("model", toml_string(detail::name_of(detail::wall_model_names, s.wall_contact.model)));
     w.fields(s.wall_contact, detail::wall_contact_fields);
 
     for (const engine::RockRelease& rock : s.rocks) {
         w.array_header("rocks");
-        if (rock.rock.shape) {
-            // The hull itself, so that the text stands alone (no mesh file to look for).
-            w.line("shape_name", toml_string(rock.rock.shape->name));
-            std::string points;
-            for (const shapes::Vec3& v : rock.rock.shape->hull.vertices) {
-                points += "\n    " + value_text(engine::Vec3(v)) + ",";
-            }
-            w.line("vertices", "[" + points + "\n]");
-        } else {
-            w.line("kind", toml_string(shapes::to_string(rock.rock.kind)));
-        }
-        w.fields(rock.rock, detail::rock_fields);
-        w.header("rocks.material");
-        w.fields(rock.rock.material, detail::material_fields);
+        if (!rock.name.empty()) w.line("name", toml_string(rock.name));
+        write_rock_spec(w, rock.rock, "rocks");
         w.header("rocks.release");
         w.fields(rock.release, detail::release_fields);
     }
@@ -162,7 +167,7 @@ std::string format_scenario(const engine::Scenario& s) {
     if (s.cluster) {
         const engine::Cluster& cluster = *s.cluster;
         w.header("cluster");
-        w.line("kind", toml_string(shapes::to_string(cluster.rock.kind)));
+        write_shape(w, cluster.rock);
         w.line("density", value_text(cluster.rock.density));
         w.fields(cluster.grading, detail::grading_fields);
         w.fields(cluster, detail::cluster_fields);
@@ -170,10 +175,21 @@ std::string format_scenario(const engine::Scenario& s) {
         w.fields(cluster.rock.material, detail::material_fields);
         w.header("cluster.box");
         w.fields(cluster.box, detail::release_box_fields);
+        for (const engine::MarkedRock& marked : cluster.marked) {
+            w.array_header("cluster.marked");
+            w.line("name", toml_string(marked.name));
+            w.fields(marked, detail::marked_rock_fields);
+            if (marked.orientation_deg) {
+                w.line("orientation_deg", value_text(*marked.orientation_deg));
+            }
+            write_rock_spec(w, marked.rock, "cluster.marked");
+        }
     }
 
     w.header("numerics");
     w.fields(s.numerics, detail::numerics_fields);
+    w.line("wall_stepping",
+           toml_string(detail::name_of(detail::wall_stepping_names, s.numerics.wall_stepping)));
     return std::move(w).str();
 }
 

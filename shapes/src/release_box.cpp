@@ -165,6 +165,18 @@ Eigen::Matrix3d flip(int k) {
 
 }  // namespace
 
+void check_release_spot(const ReleaseBox& box, const Vec2& spot, double r) {
+    if (box.length < 2.0 * r || box.width < 2.0 * r) {
+        throw PackingError("a rock of bounding sphere " + number(2.0 * r) +
+                               " m across does not fit the release box's floor (" +
+                               number(box.length) + " x " + number(box.width) + " m)",
+                           0, std::pow(2.0 * r, 3));
+    }
+    detail::check_range("spot along the box", spot.x(), "m", r, box.length - r);
+    detail::check_range("spot across the box", spot.y(), "m", -0.5 * box.width + r,
+                        0.5 * box.width - r);
+}
+
 OrientedBox release_box_region(const Slope& slope, const ReleaseBox& box) {
     check_box(slope, box);
     const detail::SegmentPlane plane = detail::segment_plane(slope, 0);
@@ -180,8 +192,17 @@ OrientedBox release_box_region(const Slope& slope, const ReleaseBox& box) {
 }
 
 std::vector<Vec3> pack_release_box(const Slope& slope, const ReleaseBox& box,
-                                   const std::vector<double>& radii, std::mt19937_64& generator) {
+                                   const std::vector<double>& radii, std::mt19937_64& generator,
+                                   const std::vector<std::optional<Vec2>>& spots) {
     check_box(slope, box);
+    if (!spots.empty() && spots.size() != radii.size()) {
+        throw std::invalid_argument("pack_release_box: " + std::to_string(spots.size()) +
+                                    " spots for " + std::to_string(radii.size()) + " rocks");
+    }
+    const auto spot = [&](std::size_t i) -> const std::optional<Vec2>& {
+        static const std::optional<Vec2> none;
+        return spots.empty() ? none : spots[i];
+    };
     const double smallest_side = std::min({box.length, box.width, box.height});
     std::vector<double> volumes;
     for (std::size_t i = 0; i < radii.size(); ++i) {
@@ -204,10 +225,26 @@ std::vector<Vec3> pack_release_box(const Slope& slope, const ReleaseBox& box,
     std::vector<Vec3> local(radii.size(), Vec3::Zero());
     double placed_volume = 0.0;
     double top = 0.0;
+    // The rocks without a spot in the box's order, then those with one, in index order.
+    std::vector<std::size_t> order;
     for (const std::size_t index : drop_order(radii, box.order, generator)) {
+        if (!spot(index)) order.push_back(index);
+    }
+    for (std::size_t index = 0; index < radii.size(); ++index) {
+        if (spot(index)) order.push_back(index);
+    }
+    for (const std::size_t index : order) {
         const double r = radii[index];
         Vec3 best(0.0, 0.0, std::numeric_limits<double>::infinity());
-        for (int k = 0; k < packing_candidates; ++k) {
+        if (const std::optional<Vec2>& at = spot(index)) {
+            try {
+                check_release_spot(box, *at, r);
+            } catch (const std::invalid_argument& error) {
+                throw std::invalid_argument("rock " + std::to_string(index) + ": " + error.what());
+            }
+            best = Vec3(at->x(), at->y(), drop_height(placed, at->x(), at->y(), r));
+        }
+        for (int k = 0; k < packing_candidates && !spot(index); ++k) {
             const double x = r + uniform01(generator) * (box.length - 2.0 * r);
             const double y = -half_width + r + uniform01(generator) * (box.width - 2.0 * r);
             const double z = drop_height(placed, x, y, r);

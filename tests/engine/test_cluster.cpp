@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <vector>
 
@@ -44,17 +45,23 @@ Scenario flume_cluster(int count) {
     return scenario;
 }
 
+// The run with `seed`, and each rock's state at t = 0 (the gate's opening) in `start`.
+Outcome simulate_from(const Scenario& scenario, std::uint64_t seed,
+                      std::map<int, RockState>& start) {
+    RunOptions options;
+    options.trajectory = [&](int index, const RockState& s) {
+        if (s.time == 0.0) start[index] = s;
+    };
+    return simulate(scenario, seed, options);
+}
+
 }  // namespace
 
 TEST_CASE("a cluster released from its box runs down the flume and comes to rest",
           "[engine][cluster][verification]") {
     const Scenario scenario = flume_cluster(20);
     std::map<int, RockState> start;
-    RunOptions options;
-    options.trajectory = [&](int index, const RockState& s) {
-        if (s.time == 0.0) start[index] = s;
-    };
-    const Outcome outcome = simulate(scenario, 7, options);
+    const Outcome outcome = simulate_from(scenario, 7, start);
     REQUIRE(outcome.rocks.size() == 20);
     // At the gate's opening every rock is inside the box and nearly still (settled).
     const shapes::Slope slope(scenario.slope);
@@ -86,4 +93,44 @@ TEST_CASE("a cluster released from its box runs down the flume and comes to rest
     CHECK(again.state_hash == outcome.state_hash);
     const Outcome other = simulate(scenario, 8);
     CHECK(other.state_hash != outcome.state_hash);
+}
+
+TEST_CASE("marked rocks start at their spots on top of the cluster and keep their names",
+          "[engine][cluster][verification]") {
+    Scenario scenario = flume_cluster(10);
+    MarkedRock red;
+    red.name = "red";
+    red.rock.kind = shapes::RockKind::sphere;
+    red.rock.size = 0.06;
+    red.along = 0.30;
+    red.across = -0.15;
+    MarkedRock slab = red;
+    slab.name = "slab";
+    slab.rock.kind = shapes::RockKind::planar;
+    slab.along = 0.12;
+    slab.across = 0.15;
+    slab.orientation_deg = Vec3(0.0, 0.0, 90.0);
+    scenario.cluster->marked = {red, slab};
+    std::map<int, RockState> start;
+    const Outcome outcome = simulate_from(scenario, 3, start);
+    REQUIRE(outcome.rocks.size() == 12);
+    CHECK(outcome.rocks[10].name == "red");
+    CHECK(outcome.rocks[11].name == "slab");
+    CHECK(outcome.rocks[0].name.empty());
+    CHECK(outcome.rocks[10].size == 0.06);
+    const shapes::Slope slope(scenario.slope);
+    const shapes::OrientedBox box = shapes::release_box_region(slope, scenario.cluster->box);
+    for (const int index : {10, 11}) {
+        const MarkedRock& marked = scenario.cluster->marked[static_cast<std::size_t>(index - 10)];
+        const Vec3 local = box.rotation.transpose() * (start.at(index).position - box.center);
+        INFO(marked.name << " starts at " << local.transpose() << " in the box");
+        // Dropped at its spot, it settles for a second on the 45 deg floor of the box: it keeps
+        // its place across and can only slide downslope, to the gate (box x runs from
+        // -length / 2 at the back face).
+        const double along = local.x() + box.half_extents.x();
+        CHECK(std::abs(local.y() - marked.across) < 0.03);
+        CHECK(along > marked.along - 0.02);
+        CHECK(along < scenario.cluster->box.length);
+        CHECK(outcome.rocks[static_cast<std::size_t>(index)].reach > 0.0);
+    }
 }

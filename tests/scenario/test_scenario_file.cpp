@@ -224,7 +224,7 @@ TEST_CASE("unknown keys are reported with a suggestion", "[scenario][scenario][e
     const ScenarioProblem misspelt = problem_for(error, "rocks[0].densty");
     CHECK(misspelt.line == line_of(file, "densty"));
     CHECK_THAT(misspelt.message, Contains("2600.0: unknown key (did you mean 'density'?)"));
-    CHECK_THAT(misspelt.message, Contains("allowed here: kind, size, density"));
+    CHECK_THAT(misspelt.message, Contains("allowed here: name, kind, size, density"));
     const ScenarioProblem table = problem_for(error, "weather");
     CHECK(table.line == line_of(file, "[weather]"));
     CHECK_THAT(table.message, Contains("unknown key"));

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -166,6 +167,45 @@ TEST_CASE("rocks dropped into the box rest on the floor or on another rock", "[r
         }
         REQUIRE(supported);
     }
+}
+
+TEST_CASE("rocks with a spot are dropped there after the others, on top", "[release_box]") {
+    const Slope slope = flume(45.0);
+    const ReleaseBox box;
+    const OrientedBox region = release_box_region(slope, box);
+    std::vector<double> radii = c2_radii(40);
+    const std::size_t n = radii.size();
+    radii.push_back(0.03);
+    radii.push_back(0.04);
+    std::vector<std::optional<rockfall::shapes::Vec2>> spots(radii.size());
+    spots[n] = rockfall::shapes::Vec2(0.2, 0.0);
+    spots[n + 1] = rockfall::shapes::Vec2(0.3, -0.2);
+    auto generator = make_generator(11);
+    const std::vector<Vec3> centers = pack_release_box(slope, box, radii, generator, spots);
+    double top_of_others = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 local = region.rotation.transpose() * (centers[i] - region.center);
+        top_of_others = std::max(top_of_others, local.z());
+    }
+    for (const std::size_t i : {n, n + 1}) {
+        const Vec3 local = region.rotation.transpose() * (centers[i] - region.center);
+        CHECK_THAT(local.x() + region.half_extents.x(), WithinAbs(spots[i]->x(), 1e-12));
+        CHECK_THAT(local.y(), WithinAbs(spots[i]->y(), 1e-12));
+        for (std::size_t j = 0; j < centers.size(); ++j) {
+            if (j != i) CHECK((centers[i] - centers[j]).norm() >= radii[i] + radii[j]);
+        }
+    }
+    // C2's 99 cubes (as bounding spheres) cover the floor, so the spot rocks lie on them.
+    const Vec3 first = region.rotation.transpose() * (centers[n] - region.center);
+    CHECK(first.z() + region.half_extents.z() > 0.03 + 0.03);
+    CHECK(top_of_others > 0.0);
+
+    // A spot whose rock would cross a wall is refused, naming the rock.
+    spots[n + 1] = rockfall::shapes::Vec2(0.3, -0.29);
+    auto again = make_generator(11);
+    CHECK_THROWS_WITH(pack_release_box(slope, box, radii, again, spots),
+                      Contains("rock " + std::to_string(n + 1) +
+                               ": spot across the box = -0.29 m: must be in [-0.26, 0.26]"));
 }
 
 TEST_CASE("a C2 cluster of elongated rocks packs lying flat into the default box",

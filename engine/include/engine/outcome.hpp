@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -104,6 +105,8 @@ struct WallHit {
 
 /// Outcome for one rock.
 struct RockOutcome {
+    /// The rock's name (a named [[rocks]] entry or a marked cluster rock), or empty.
+    std::string name;
     /// Nominal size (volume-equivalent diameter) of the rock as simulated, m: the scenario's, or
     /// the size a cluster rock was drawn with.
     double size = 0.0;
@@ -136,9 +139,13 @@ struct Outcome {
     std::vector<RockOutcome> rocks;
     /// Simulated time when the last rock stopped, s.
     double simulated_time = 0.0;
-    /// Steps taken at the coarse and at the fine (near-wall) time step.
+    /// World steps taken at the coarse time step, and fine steps near the wall: the world's
+    /// (numerics.wall_stepping = "world") or the wall sub-steps of single rocks ("per_rock").
     std::int64_t coarse_steps = 0;
     std::int64_t fine_steps = 0;
+    /// World steps times the rocks in the world during each (moving or at rest), after the
+    /// gate opened: the work of the rigid-body solver.
+    std::int64_t body_steps = 0;
     /// Hash of the final state of all rocks (bitwise): equal for equal runs.
     std::uint64_t state_hash = 0;
 };

@@ -103,8 +103,35 @@ struct Release {
 
 /// A rock and its release.
 struct RockRelease {
+    /// Name shown in outputs (a tracked rock), or empty.
+    std::string name;
     RockSpec rock;
     Release release;
+};
+
+/// A marked rock of a cluster (seed 001 tracked four): named, with its own shape, dropped into
+/// the release box at a given spot after the drawn rocks, and reported one by one.
+struct MarkedRock {
+    /// Name shown in outputs, unique among the scenario's rocks; not empty.
+    std::string name;
+    /// Shape (family or custom hull), size, density and material.
+    RockSpec rock;
+    /// Spot in the box: distance from its back (upslope) face along the slope, m, and offset
+    /// across from its centre line, m; the rock's bounding sphere must fit inside the walls.
+    double along = 0.2;
+    double across = 0.0;
+    /// Orientation as x-y-z Euler angles in the slope's surface frame, degrees, or (empty) drawn
+    /// at random from the run's seed like the other cluster rocks.
+    std::optional<Vec3> orientation_deg;
+};
+
+/// How the compliant wall contact of an impact is stepped.
+enum class WallStepping {
+    /// Sub-stepped on the rocks that touch the wall, inside the world's coarse step (the
+    /// default; docs/scenarios.md, "Wall stepping").
+    per_rock,
+    /// The whole world takes the contact's fine step while any rock makes an impact.
+    world,
 };
 
 /// Time stepping and stop rule.
@@ -123,6 +150,8 @@ struct Numerics {
     double restitution_threshold = 0.05;
     /// Solver iterations per step, in [1, 100].
     int solver_iterations = 10;
+    /// Stepping of wall impacts.
+    WallStepping wall_stepping = WallStepping::per_rock;
 };
 
 /// A cluster of rocks released together from a box (seed 001): sizes drawn from a grain-size
@@ -131,8 +160,8 @@ struct Numerics {
 struct Cluster {
     /// Grain sizes (volume-equivalent diameters) and their number or solid volume.
     shapes::Grading grading;
-    /// Family (default massive), density and material of every cluster rock; its size is the
-    /// drawn one.
+    /// Family (default massive) or custom hull (a catalogue entry, a mesh), density and
+    /// material of every cluster rock; its size is the drawn one.
     RockSpec rock = [] {
         RockSpec spec;
         spec.kind = shapes::RockKind::massive;
@@ -140,8 +169,13 @@ struct Cluster {
     }();
     /// The box at the top of the first segment.
     shapes::ReleaseBox box;
+    /// When > 0, each drawn rock is instead a random hull of this Wadell sphericity (its own
+    /// from the run's seed, shapes::rock_with_sphericity), in [0.5, 0.95].
+    double sphericity = 0.0;
     /// Time the packed rocks settle in the closed box before the gate opens, s (> 0).
     double settle_time = 1.0;
+    /// Marked rocks, after the drawn ones in the outcome.
+    std::vector<MarkedRock> marked;
 };
 
 /// Everything one simulation needs.

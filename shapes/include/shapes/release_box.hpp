@@ -13,11 +13,14 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 namespace rockfall::shapes {
+
+using Vec2 = Eigen::Vector2d;
 
 /// The order in which rocks are dropped into the box.
 enum class PackingOrder {
@@ -77,8 +80,20 @@ inline constexpr int packing_candidates = 200;
 /// radii and generator state give the same centres. Throws std::invalid_argument for a radius that
 /// is not finite > 0 or a bad box, and PackingError when a rock fits nowhere (with the box volume
 /// needed, from the packing density reached so far).
+///
+/// `spots` (empty, or one per rock): a rock with a spot (x from the box's back face along the
+/// slope, y across from its centre line, m) is dropped there, after all rocks without one (so
+/// it lies on top of the pile at that spot, where an overhead camera sees it: seed 001's marked
+/// rocks), in index order. Throws std::invalid_argument naming the rock when its bounding
+/// sphere at the spot would cross a wall.
 std::vector<Vec3> pack_release_box(const Slope& slope, const ReleaseBox& box,
-                                   const std::vector<double>& radii, std::mt19937_64& generator);
+                                   const std::vector<double>& radii, std::mt19937_64& generator,
+                                   const std::vector<std::optional<Vec2>>& spots = {});
+
+/// Throws std::invalid_argument (PackingError when the rock cannot fit the floor at all)
+/// unless a rock of bounding radius `radius` (m) dropped at `spot` (as pack_release_box's
+/// spots) stays inside the box's walls; the message gives the allowed range.
+void check_release_spot(const ReleaseBox& box, const Vec2& spot, double radius);
 
 /// Where a packed rock starts: p_slope = center + rotation p_body for a point p_body of the
 /// rock's body frame (RockGeometry: centroid at the origin, principal axes on x, y, z).
