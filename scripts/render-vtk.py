@@ -39,18 +39,20 @@ def main(argv):
     view.OrientationAxesVisibility = 1
 
     scene = XMLPolyDataReader(FileName=[os.path.join(directory, "static.vtp")])
-    # Solids (slabs, walls) light grey, lining spheres and sheet darker.
-    solids = Threshold(Input=scene, Scalars=["CELLS", "part"], LowerThreshold=0,
-                       UpperThreshold=3)
-    lining = Threshold(Input=scene, Scalars=["CELLS", "part"], LowerThreshold=4,
-                       UpperThreshold=7)
-    solids_display = Show(solids, view)
-    solids_display.ColorArrayName = ["CELLS", ""]
-    solids_display.DiffuseColor = [0.8, 0.8, 0.8]
-    solids_display.Opacity = 0.35
-    lining_display = Show(lining, view)
-    lining_display.ColorArrayName = ["CELLS", ""]
-    lining_display.DiffuseColor = [0.45, 0.45, 0.5]
+    # Solids (slabs, bars, walls) light grey and translucent, the lining darker; framing the
+    # rocks, the side walls are left out (they stand between the camera and the rocks).
+    def part(low, high, colour, opacity):
+        shown = Show(Threshold(Input=scene, Scalars=["CELLS", "part"], LowerThreshold=low,
+                               UpperThreshold=high), view)
+        shown.ColorArrayName = ["CELLS", ""]
+        shown.DiffuseColor = colour
+        shown.Opacity = opacity
+
+    part(0, 1, [0.8, 0.8, 0.8], 0.35)
+    if focus == "scene":
+        part(2, 2, [0.8, 0.8, 0.8], 0.35)
+    part(3, 3, [0.7, 0.6, 0.5], 0.5)
+    part(4, 7, [0.45, 0.45, 0.5], 1.0)
 
     rocks = PVDReader(FileName=os.path.join(directory, "rocks.pvd"))
     rocks.UpdatePipelineInformation()
