@@ -3,6 +3,7 @@
 // engine's geometry hook gives the hulls of a cluster's rocks sitting in their box.
 
 #include "report/vtk_output.hpp"
+#include "scenario/scenario_file.hpp"
 
 #include "engine/simulation.hpp"
 #include "shapes/lining.hpp"
@@ -172,22 +173,10 @@ TEST_CASE("the static surface holds the slope's solids, the lining and the extra
 
 TEST_CASE("the engine gives a cluster's rock geometries, which sit in the box at t = 0",
           "[report][vtk][engine]") {
-    engine::Scenario scenario;
-    scenario.slope.segments = {{1.82, 45.0}, {1.82, 0.0}};
-    scenario.slope.width = 0.6;
-    scenario.slope.thickness = 0.1;
-    scenario.slope.bars.enabled = false;
-    scenario.slope.bars.segments.clear();
-    scenario.slope.side_walls.height = 0.3;
-    scenario.slope.side_walls.thickness = 0.01;
-    scenario.slope.wall.distance_from_toe = 0.5;
-    scenario.slope.wall.height = 0.3;
-    scenario.rocks.clear();
-    engine::Cluster cluster;
-    cluster.grading = shapes::seed001_c2();
-    cluster.grading.count = 6;
-    cluster.rock.material = {0.4, 0.3, 0.02};
-    scenario.cluster = cluster;
+    // Seed 001's lined flume at 45 deg with 6 rocks of its cluster, just past the gate's opening.
+    engine::Scenario scenario =
+        scenario::load_scenario(ROCKFALL_SAMPLES_DIR "/flume_45.toml").scenario;
+    scenario.cluster->grading.count = 6;
     scenario.numerics.max_time = 0.05;
 
     engine::RunGeometry geometry;
