@@ -12,7 +12,6 @@
 #include <map>
 #include <ostream>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace rockfall::report {
@@ -67,6 +66,8 @@ class FrameRecorder {
   public:
     /// `interval` in s, > 0.
     explicit FrameRecorder(double interval);
+    /// Takes a sample of rock `rock` (0-based, outcome order) into its frame, unless the rock
+    /// already has an earlier sample there.
     void add(int rock, const engine::RockState& state);
     /// The frames in time order.
     std::vector<RockFrame> frames() const;
