@@ -1,16 +1,21 @@
-// `rockfall simulate`: one release of a scenario, summary or JSON, optional trajectory CSV.
+// `rockfall simulate`: one release of a scenario, summary or JSON, optional trajectory CSV and
+// ParaView series.
 
 #include "commands.hpp"
 #include "output_file.hpp"
 #include "report/simulation_report.hpp"
+#include "report/vtk_output.hpp"
 #include "scenario/scenario_file.hpp"
 
 #include "db/results_db.hpp"
 #include "engine/simulation.hpp"
 #include "risk/sampling.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -18,9 +23,12 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace rockfall::app {
 namespace {
+
+namespace fs = std::filesystem;
 
 struct SimulateArgs {
     std::string scenario;
@@ -30,6 +38,10 @@ struct SimulateArgs {
     double trajectory_interval = 0.01;
     std::string from;
     std::int64_t sample = -1;
+    std::vector<std::size_t> rocks;
+    bool all_rocks = false;
+    std::string vtk_dir;
+    double vtk_interval = 0.02;
 };
 
 /// What to run: a scenario file, or one sample of a sweep database.
@@ -70,15 +82,24 @@ Job job_from_arguments(const SimulateArgs& args) {
             std::nullopt};
 }
 
-/// Trajectory rows as CSV, committed only when the run completed.
+/// Trajectory rows as CSV, committed only when the run completed. When the engine samples more
+/// often than `interval` (a finer --vtk-interval), a rock's row is kept at the first sample at
+/// or after each multiple of the interval, as the engine samples.
 class TrajectoryCsv {
   public:
-    explicit TrajectoryCsv(std::filesystem::path path) : file_(std::move(path)) {
+    TrajectoryCsv(std::filesystem::path path, double interval, bool thin)
+        : file_(std::move(path)), interval_(interval), thin_(thin) {
         file_.stream() << "rock,time_s,x_m,y_m,z_m,qw,qx,qy,qz,vx_m_s,vy_m_s,vz_m_s,wx_rad_s,"
                           "wy_rad_s,wz_rad_s,translational_energy_J,rotational_energy_J\n"
                        << std::setprecision(9);
     }
     void add(int rock, const engine::RockState& s) {
+        if (thin_) {
+            const auto index = static_cast<std::size_t>(rock);
+            if (next_.size() <= index) next_.resize(index + 1, 0);
+            if (s.time < static_cast<double>(next_[index]) * interval_) return;
+            next_[index] = static_cast<long>(std::floor(s.time / interval_)) + 1;
+        }
         const auto& q = s.orientation;
         file_.stream() << rock + 1 << ',' << s.time << ',' << s.position.x() << ','
                        << s.position.y() << ',' << s.position.z() << ',' << q.w() << ',' << q.x()
@@ -91,33 +112,126 @@ class TrajectoryCsv {
 
   private:
     OutputFile file_;
+    double interval_;
+    bool thin_;
+    std::vector<long> next_;
 };
+
+/// The ParaView series of a run in a directory: static.vtp (the static geometry),
+/// rocks_NNNNN.vtp (the rocks at each frame) and rocks.pvd (the frames with their times),
+/// each written by the output-file rule after the run, the .pvd last.
+class VtkSeries {
+  public:
+    VtkSeries(fs::path dir, double interval) : dir_(std::move(dir)), frames_(interval) {
+        std::error_code error;
+        fs::create_directories(dir_, error);
+        if (error || !fs::is_directory(dir_)) {
+            throw std::invalid_argument("--vtk " + dir_.string() +
+                                        ": cannot create the directory (" +
+                                        (error ? error.message() : "not a directory") + ")");
+        }
+        // A path in it that may not be written (a directory named rocks.pvd) is refused now.
+        output_target(dir_ / "rocks.pvd");
+        output_target(dir_ / "static.vtp");
+    }
+    void add(int rock, const engine::RockState& s) { frames_.add(rock, s); }
+    void set_geometry(const engine::RunGeometry& geometry) { geometry_ = geometry; }
+    /// Writes every file; returns the number of frames.
+    std::size_t write(const engine::Scenario& scenario) const {
+        OutputFile scene(dir_ / "static.vtp");
+        report::write_vtp(scene.stream(), report::static_surface(scenario, geometry_.solids),
+                          std::nan(""));
+        scene.commit();
+        std::vector<report::PvdEntry> entries;
+        const std::vector<report::RockFrame> frames = frames_.frames();
+        for (std::size_t k = 0; k < frames.size(); ++k) {
+            char name[32];
+            std::snprintf(name, sizeof name, "rocks_%05zu.vtp", k);
+            OutputFile file(dir_ / name);
+            report::write_vtp(file.stream(), report::rocks_surface(geometry_.rocks, frames[k]),
+                              frames[k].time);
+            file.commit();
+            entries.push_back({frames[k].time, name});
+        }
+        OutputFile pvd(dir_ / "rocks.pvd");
+        report::write_pvd(pvd.stream(), entries);
+        pvd.commit();
+        return frames.size();
+    }
+
+  private:
+    fs::path dir_;
+    report::FrameRecorder frames_;
+    engine::RunGeometry geometry_;
+};
+
+// The rocks a scenario will have, when known before the run (a cluster given by volume draws
+// its count); 0 when not.
+std::size_t known_rock_count(const engine::Scenario& scenario) {
+    if (!scenario.cluster) return scenario.rocks.size();
+    if (scenario.cluster->grading.count <= 0) return 0;
+    return scenario.rocks.size() + static_cast<std::size_t>(scenario.cluster->grading.count);
+}
+
+// --rock N (1-based) as 0-based indices; throws naming the number when there is no such rock.
+std::vector<std::size_t> rock_indices(const std::vector<std::size_t>& numbers, std::size_t count) {
+    std::vector<std::size_t> indices;
+    for (const std::size_t n : numbers) {
+        if (n < 1 || n > count)
+            throw std::invalid_argument("--rock " + std::to_string(n) +
+                                        ": the run has rocks 1 to " + std::to_string(count));
+        indices.push_back(n - 1);
+    }
+    return indices;
+}
 
 void run_simulate(const SimulateArgs& args) {
     const Job job = job_from_arguments(args);
+    if (const std::size_t count = known_rock_count(job.scenario); count > 0)
+        rock_indices(args.rocks, count);
     engine::RunOptions options;
+    // The engine samples at the finer of the two intervals; each consumer keeps its own.
+    options.trajectory_interval = args.trajectory_interval;
+    if (!args.vtk_dir.empty())
+        options.trajectory_interval = std::min(args.trajectory_interval, args.vtk_interval);
+    std::unique_ptr<VtkSeries> vtk;
+    if (!args.vtk_dir.empty()) {
+        vtk = std::make_unique<VtkSeries>(args.vtk_dir, args.vtk_interval);
+        options.geometry = [&vtk](const engine::RunGeometry& g) { vtk->set_geometry(g); };
+    }
     std::unique_ptr<TrajectoryCsv> csv;
     if (!args.trajectory.empty()) {
-        csv = std::make_unique<TrajectoryCsv>(args.trajectory);
-        options.trajectory = [&csv](int rock, const engine::RockState& s) { csv->add(rock, s); };
-        options.trajectory_interval = args.trajectory_interval;
+        csv =
+            std::make_unique<TrajectoryCsv>(args.trajectory, args.trajectory_interval,
+                                            options.trajectory_interval < args.trajectory_interval);
     }
+    report::SeriesRecorder series;
+    options.trajectory = [&](int rock, const engine::RockState& s) {
+        series.add(rock, s);
+        if (csv) csv->add(rock, s);
+        if (vtk) vtk->add(rock, s);
+    };
     const auto start = std::chrono::steady_clock::now();
     const engine::Outcome outcome = engine::simulate(job.scenario, job.seed, options);
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
     if (csv) csv->commit();
+    const std::size_t vtk_frames = vtk ? vtk->write(job.scenario) : 0;
 
+    report::RockDetail detail{args.all_rocks, rock_indices(args.rocks, outcome.rocks.size())};
+    report::RunSeries run_series{series.series(), {}};
+    if (outcome.rocks.size() > 1)
+        run_series.front = report::cluster_front(job.scenario, run_series.rocks, outcome);
     const report::RunInfo info{job.source, job.seed, elapsed.count()};
     // A replay must reproduce the stored outcome bit for bit (same binary); say so either way.
     const bool replay_matches =
         !job.stored || (job.stored->reach == outcome.rocks[0].reach &&
                         job.stored->stop_time == outcome.rocks[0].stop_time);
     if (args.json) {
-        nlohmann::json json = report::outcome_json(job.scenario, outcome, info);
+        nlohmann::json json = report::outcome_json(job.scenario, outcome, info, run_series);
         if (job.stored) json["replay_matches_database"] = replay_matches;
         std::cout << json.dump(2) << '\n';
     } else {
-        report::print_summary(std::cout, job.scenario, outcome, info);
+        report::print_summary(std::cout, job.scenario, outcome, info, run_series, detail);
         if (job.stored)
             std::cout << (replay_matches
                               ? "replay matches the database's stored outcome\n"
@@ -125,6 +239,9 @@ void run_simulate(const SimulateArgs& args) {
                                 "platform made the database)\n");
         if (!args.trajectory.empty())
             std::cout << "trajectory written to " << args.trajectory << '\n';
+        if (vtk)
+            std::cout << vtk_frames << " VTK frames written to " << args.vtk_dir
+                      << " (open rocks.pvd and static.vtp in ParaView)\n";
     }
 }
 
@@ -150,6 +267,17 @@ void register_simulate(CLI::App& app) {
         ->check(CLI::ExistingFile);
     cmd->add_option("--sample", args->sample, "... and the sample's index (0-based)")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--rock", args->rocks,
+                    "Print rock N (1-based, as in the rock table) in full; repeat for more. The "
+                    "scenario's own [[rocks]] and named (marked) rocks are always in full")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--all-rocks", args->all_rocks, "Print every rock in full");
+    cmd->add_option("--vtk", args->vtk_dir,
+                    "Write a ParaView series to this directory: rocks.pvd (the rocks' hulls at "
+                    "each frame) and static.vtp (slope, walls, lining)");
+    cmd->add_option("--vtk-interval", args->vtk_interval, "Time between VTK frames, s")
+        ->check(CLI::Range(1e-4, 10.0))
+        ->capture_default_str();
     cmd->callback([args] { run_simulate(*args); });
 }
 

@@ -119,6 +119,13 @@ Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options
         std::vector<PlacedRock> cluster = cluster_rocks(slope_, *scenario.cluster, seed);
         std::move(cluster.begin(), cluster.end(), std::back_inserter(placed));
     }
+    if (options.geometry) {
+        RunGeometry geometry;
+        for (const PlacedRock& rock : placed) geometry.rocks.push_back(rock.geometry);
+        if (scenario.cluster)
+            geometry.solids.push_back(release_box_walls(slope_, scenario.cluster->box)[1]);
+        options.geometry(geometry);
+    }
     std::vector<int> bodies;
     for (const PlacedRock& rock : placed) {
         bodies.push_back(world_.add_rock(rock.geometry, rock.spec.rock, rock.initial));

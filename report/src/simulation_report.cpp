@@ -4,8 +4,10 @@
 
 #include "shapes/rocks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 namespace rockfall::report {
@@ -63,25 +65,160 @@ void print_hits(std::ostream& out, const engine::RockOutcome& rock) {
     }
 }
 
-// The rock as simulated: the scenario's, or a cluster rock with its drawn size.
+// The rock as simulated (outcome index `index` of `count`): the scenario's, a marked cluster
+// rock (the last ones), or a drawn cluster rock with its drawn size. A drawn rock of a target
+// sphericity has its own hull; its spec here is labelled by the target, and its mass follows
+// from the size alone (the size is the volume-equivalent diameter).
 engine::RockSpec rock_spec(const engine::Scenario& scenario, const engine::RockOutcome& rock,
-                           std::size_t index) {
+                           std::size_t index, std::size_t count) {
     if (index < scenario.rocks.size()) return scenario.rocks[index].rock;
-    engine::RockSpec spec = scenario.cluster->rock;
+    const engine::Cluster& cluster = *scenario.cluster;
+    if (index + cluster.marked.size() >= count) {
+        return cluster.marked[index + cluster.marked.size() - count].rock;
+    }
+    engine::RockSpec spec = cluster.rock;
     spec.size = rock.size;
+    if (cluster.sphericity > 0.0) {
+        spec.kind = shapes::RockKind::custom;
+        spec.shape = std::make_shared<const shapes::CustomShape>(shapes::CustomShape{
+            fmt("sphericity %.2f", cluster.sphericity), shapes::make_rock(cluster.rock.kind, 1.0).hull});
+    }
     return spec;
+}
+
+// The hits' count, largest peak normal force (N) and total normal impulse (N s).
+struct HitTotals {
+    std::size_t count = 0;
+    double peak = 0.0;
+    double impulse = 0.0;
+};
+
+HitTotals hit_totals(const engine::RockOutcome& rock) {
+    HitTotals totals;
+    totals.count = rock.wall_hits.size();
+    for (const auto& h : rock.wall_hits) {
+        totals.peak = std::max(totals.peak, h.peak_normal_force);
+        totals.impulse += h.normal_impulse;
+    }
+    return totals;
+}
+
+const RockSeries* series_of(const RunSeries& series, std::size_t index) {
+    if (index >= series.rocks.size() || series.rocks[index].points.empty()) return nullptr;
+    return &series.rocks[index];
+}
+
+void print_distance_table(std::ostream& out, const RockSeries& series) {
+    out << "  distance travelled (centre of mass path): " << fmt("%.3f m", series.distance())
+        << "; speed against distance travelled:\n";
+    for (const SeriesPoint& p : sampled_by_distance(series, summary_distance_rows)) {
+        out << "    s " << fmt("%7.3f m", p.distance) << "  t " << fmt("%7.3f s", p.time) << "  v "
+            << fmt("%6.2f m/s", p.speed) << "  x " << fmt("%7.3f m", p.position.x()) << '\n';
+    }
+}
+
+void print_rock_table(std::ostream& out, const engine::Scenario& scenario,
+                      const engine::Outcome& outcome, const RunSeries& series) {
+    out << "rocks (s: distance travelled by the centre of mass; hits: wall hits, largest peak "
+           "normal force, total normal impulse):\n";
+    out << "  rock  size m  mass kg  stop               at s  reach m     s m  v_max m/s  hits"
+           "  peak kN  impulse N s\n";
+    for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
+        const auto& rock = outcome.rocks[i];
+        const engine::RockSpec spec = rock_spec(scenario, rock, i, outcome.rocks.size());
+        const HitTotals hits = hit_totals(rock);
+        const RockSeries* s = series_of(series, i);
+        char row[200];
+        std::snprintf(row, sizeof row,
+                      "  %4zu  %6.3f  %7.3f  %-17s %6.2f  %7.3f  %6s  %9.2f  %4zu  %7.2f  %11.2f\n",
+                      i + 1, spec.size, rock_mass(spec),
+                      std::string(engine::to_string(rock.stop)).c_str(), rock.stop_time, rock.reach,
+                      s ? fmt("%6.3f", s->distance()).c_str() : "-", rock.max_speed, hits.count,
+                      hits.peak / 1e3, hits.impulse);
+        out << row;
+    }
+}
+
+// The front at `rows` times evenly spaced over the run (the latest point at or before each),
+// and when it first passed the toe and each station.
+void print_front(std::ostream& out, const engine::Scenario& scenario,
+                 const std::vector<FrontPoint>& front) {
+    if (front.empty()) return;
+    out << "front (the rock furthest downslope; x past the toe, distance along the surface from "
+           "the crown, travel since t = 0):\n";
+    const double end = front.back().time;
+    std::size_t j = 0;
+    for (std::size_t k = 0; k < summary_front_rows; ++k) {
+        const double t = end * static_cast<double>(k) / static_cast<double>(summary_front_rows - 1);
+        while (j + 1 < front.size() && front[j + 1].time <= t) ++j;
+        const FrontPoint& p = front[j];
+        out << "    t " << fmt("%7.3f s", p.time) << "  past toe " << fmt("%7.3f m", p.past_toe)
+            << "  along surface " << fmt("%7.3f m", p.along_surface) << "  travel "
+            << fmt("%7.3f m", p.travel) << "  rock " << p.rock + 1 << '\n';
+    }
+    std::vector<double> marks = scenario.stations;
+    marks.insert(marks.begin(), 0.0);
+    std::sort(marks.begin(), marks.end());
+    marks.erase(std::unique(marks.begin(), marks.end()), marks.end());
+    for (const double d : marks) {
+        const auto hit = std::find_if(front.begin(), front.end(),
+                                      [d](const FrontPoint& p) { return p.past_toe >= d; });
+        out << "  front at " << fmt("%.2f m", d) << " past the toe: ";
+        if (hit == front.end()) {
+            out << "not reached\n";
+        } else {
+            out << "t " << fmt("%.3f s", hit->time) << " (rock " << hit->rock + 1 << ")\n";
+        }
+    }
+}
+
+// The scenario's own rocks and every named rock (marked cluster rocks) are always in full.
+bool in_full(const engine::Scenario& scenario, const engine::Outcome& outcome,
+             const RockDetail& detail, std::size_t index) {
+    return detail.all || index < scenario.rocks.size() || !outcome.rocks[index].name.empty() ||
+           std::find(detail.rocks.begin(), detail.rocks.end(), index) != detail.rocks.end();
+}
+
+nlohmann::json distance_json(const RockSeries* series) {
+    nlohmann::json rows = nlohmann::json::array();
+    if (series) {
+        for (const SeriesPoint& p : series->points) {
+            rows.push_back(
+                {p.time, p.distance, p.speed, p.position.x(), p.position.y(), p.position.z()});
+        }
+    }
+    return {{"columns", {"time_s", "distance_m", "speed_m_s", "x_m", "y_m", "z_m"}},
+            {"rows", rows}};
+}
+
+nlohmann::json front_json(const std::vector<FrontPoint>& front) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const FrontPoint& p : front) {
+        rows.push_back({p.time, p.past_toe, p.along_surface, p.travel, p.rock + 1});
+    }
+    return {{"columns", {"time_s", "past_toe_m", "along_surface_m", "travel_m", "rock_number"}},
+            {"rows", rows}};
 }
 
 }  // namespace
 
 void print_summary(std::ostream& out, const engine::Scenario& scenario,
-                   const engine::Outcome& outcome, const RunInfo& info) {
+                   const engine::Outcome& outcome, const RunInfo& info, const RunSeries& series,
+                   const RockDetail& detail) {
     out << "scenario " << scenario.name << " (" << info.scenario_path << "), seed " << info.seed
         << ", " << outcome.rocks.size() << (outcome.rocks.size() == 1 ? " rock" : " rocks") << '\n';
+    const bool several = outcome.rocks.size() > 1;
+    if (several) print_rock_table(out, scenario, outcome, series);
+    std::size_t brief = 0;
     for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
+        if (!in_full(scenario, outcome, detail, i)) {
+            ++brief;
+            continue;
+        }
         const auto& rock = outcome.rocks[i];
-        const engine::RockSpec spec = rock_spec(scenario, rock, i);
-        out << "rock " << i + 1 << ": " << rock_label(spec) << ' ' << fmt("%.3f m", spec.size)
+        const engine::RockSpec spec = rock_spec(scenario, rock, i, outcome.rocks.size());
+        out << "rock " << i + 1 << (rock.name.empty() ? "" : " \"" + rock.name + "\"") << ": "
+            << rock_label(spec) << ' ' << fmt("%.3f m", spec.size)
             << ", " << fmt("%.0f kg/m3", spec.density) << ", " << fmt("%.2f kg", rock_mass(spec))
             << '\n';
         out << "  stopped: " << engine::to_string(rock.stop) << " at "
@@ -95,18 +232,24 @@ void print_summary(std::ostream& out, const engine::Scenario& scenario,
             << fmt("%.3f m", rock.max_bounce_height) << '\n';
         print_stations(out, rock);
         print_hits(out, rock);
+        if (const RockSeries* s = series_of(series, i)) print_distance_table(out, *s);
     }
+    if (brief > 0) {
+        out << brief << " of " << outcome.rocks.size()
+            << " rocks in the table only (--rock N prints rock N in full, --all-rocks every one)\n";
+    }
+    if (several) print_front(out, scenario, series.front);
     out << "simulated " << fmt("%.3f s", outcome.simulated_time) << " in " << outcome.coarse_steps
         << " coarse + " << outcome.fine_steps << " fine (near-wall) steps; runtime "
         << fmt("%.3f s", info.runtime) << '\n';
 }
 
 nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outcome& outcome,
-                            const RunInfo& info) {
+                            const RunInfo& info, const RunSeries& series) {
     nlohmann::json rocks = nlohmann::json::array();
     for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
         const auto& rock = outcome.rocks[i];
-        const engine::RockSpec spec = rock_spec(scenario, rock, i);
+        const engine::RockSpec spec = rock_spec(scenario, rock, i, outcome.rocks.size());
         nlohmann::json stations = nlohmann::json::array();
         for (const auto& s : rock.stations) {
             stations.push_back({{"distance_from_toe_m", s.distance_from_toe},
@@ -142,7 +285,8 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
                  {"force_history",
                   {{"columns", {"time_s", "normal_N", "tangential_N"}}, {"rows", history}}}});
         }
-        rocks.push_back({{"kind", shapes::to_string(spec.kind)},
+        rocks.push_back({{"name", rock.name.empty() ? nlohmann::json(nullptr) : nlohmann::json(rock.name)},
+                         {"kind", shapes::to_string(spec.kind)},
                          {"shape_name", spec.shape ? nlohmann::json(spec.shape->name) : nullptr},
                          {"size_m", spec.size},
                          {"density_kg_m3", spec.density},
@@ -157,6 +301,14 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
                          {"velocity_change", rock.velocity_change},
                          {"stations", stations},
                          {"wall_hits", hits}});
+        const HitTotals totals = hit_totals(rock);
+        nlohmann::json& entry = rocks.back();
+        entry["wall_hit_count"] = totals.count;
+        entry["max_peak_normal_force_N"] = totals.peak;
+        entry["total_normal_impulse_N_s"] = totals.impulse;
+        const RockSeries* s = series_of(series, i);
+        entry["distance_travelled_m"] = s ? nlohmann::json(s->distance()) : nullptr;
+        entry["speed_by_distance"] = distance_json(s);
     }
     return {{"scenario", scenario.name},
             {"scenario_file", info.scenario_path},
@@ -166,7 +318,8 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
             {"coarse_steps", outcome.coarse_steps},
             {"fine_steps", outcome.fine_steps},
             {"state_hash", hex(outcome.state_hash)},
-            {"rocks", rocks}};
+            {"rocks", rocks},
+            {"front", front_json(series.front)}};
 }
 
 }  // namespace rockfall::report

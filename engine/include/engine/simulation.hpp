@@ -3,18 +3,36 @@
 
 #include "engine/outcome.hpp"
 #include "engine/scenario.hpp"
+#include "shapes/rocks.hpp"
+#include "shapes/slope.hpp"
 
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace rockfall::engine {
 
 /// Receives rock states after steps (recorders run outside the physics step).
 using TrajectorySink = std::function<void(int rock_index, const RockState& state)>;
 
+/// The bodies of a run as the engine builds them, before its first step.
+struct RunGeometry {
+    /// Every rock's geometry in its body frame (centroid at the origin, principal axes on x, y,
+    /// z; a RockState's position and orientation place it), in outcome order.
+    std::vector<shapes::RockGeometry> rocks;
+    /// Static boxes the run adds to the scenario's slope for the whole run: a cluster's
+    /// release-box back wall (its gate is removed at t = 0 and is not listed).
+    std::vector<shapes::OrientedBox> solids;
+};
+
+/// Receives the run's geometry once, before the first step.
+using GeometrySink = std::function<void(const RunGeometry& geometry)>;
+
 /// Options that do not change the physics.
 struct RunOptions {
+    /// Called once with the rocks' geometries and the run's extra solids; may be empty.
+    GeometrySink geometry;
     /// Called every `trajectory_interval` of simulated time for each moving rock; may be empty.
     TrajectorySink trajectory;
     /// Interval between trajectory samples, s (> 0).
