@@ -30,6 +30,7 @@ struct QueryArgs {
     // percentiles, exceed, curve: the breakdown.
     std::string group = "none";
     std::vector<double> size_classes;
+    std::string per = "rock";
     // percentiles.
     std::string of = "reach";
     std::vector<double> levels = {50.0, 90.0, 95.0, 99.0};
@@ -51,7 +52,8 @@ report::QueryFormat format_of(const QueryArgs& args) {
 }
 
 db::Grouping grouping_of(const QueryArgs& args) {
-    db::Grouping grouping{db::parse_group_by(args.group), args.size_classes};
+    db::Grouping grouping{db::parse_group_by(args.group), args.size_classes,
+                          db::parse_per(args.per)};
     if (!args.size_classes.empty() && grouping.by != db::GroupBy::size) {
         throw std::invalid_argument("--size-classes applies to --by size only");
     }
@@ -95,7 +97,7 @@ void run_percentiles(const QueryArgs& args) {
     const db::ResultsDb database = open_database(args);
     report::write_percentiles(std::cout, format_of(args), args.database,
                               db::percentiles(database, quantity, ps, grouping, args.confidence),
-                              grouping.by);
+                              grouping.by, grouping.per);
 }
 
 void run_exceed(const QueryArgs& args) {
@@ -112,7 +114,7 @@ void run_exceed(const QueryArgs& args) {
     report::write_exceedance(
         std::cout, format_of(args), args.database,
         db::exceedance(database, quantity, threshold, grouping, method, args.confidence),
-        grouping.by);
+        grouping.by, grouping.per);
 }
 
 void run_curve(const QueryArgs& args) {
@@ -129,7 +131,8 @@ void run_curve(const QueryArgs& args) {
                                                             std::string(db::to_string(quantity)) +
                                                             ": " + stem));
     }
-    report::write_curve(std::cout, format_of(args), args.database, curve, grouping.by);
+    report::write_curve(std::cout, format_of(args), args.database, curve, grouping.by,
+                        grouping.per);
     if (!args.svg.empty() && format_of(args) == report::QueryFormat::text) {
         std::cout << "figure written to " << args.svg << '\n';
     }
@@ -177,6 +180,11 @@ void add_grouping(CLI::App* cmd, QueryArgs& args) {
     cmd->add_option("--size-classes", args.size_classes,
                     "Size class edges (m), ascending, e.g. 0.2,0.3,0.4; default: quartiles")
         ->delimiter(',');
+    cmd->add_option("--per", args.per,
+                    "What one observation is: each rock of each sample (rock), or each sample "
+                    "as a whole (sample: its largest value over its rocks; impulse: the total)")
+        ->check(CLI::IsMember({"rock", "sample"}))
+        ->capture_default_str();
 }
 
 }  // namespace
