@@ -16,7 +16,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -27,61 +30,18 @@ namespace {
 
 constexpr int rocks_per_sample = 5;
 
-// Seed 001's 45 deg flume, unlined so that it runs in seconds, the wall 0.3 m past the toe,
-// and a 5-rock cluster of C2's grading. Two samples.
-const char* const cluster_sweep = R"toml(
-name = "cluster sweep test"
-stations = [0.0, 0.2]
-
-[slope]
-width = 0.6
-thickness = 0.1
-
-[[slope.segments]]
-length = 1.0
-angle_deg = 45.0
-
-[[slope.segments]]
-length = 1.0
-angle_deg = 0.0
-
-[slope.side_walls]
-enabled = true
-height = 0.3
-thickness = 0.01
-
-[slope.bars]
-enabled = false
-segments = []
-
-[slope.wall]
-enabled = true
-distance_from_toe = 0.3
-height = 0.3
-thickness = 0.2
-
-[cluster]
-kind = "massive"
-density = 2620.0
-count = 5
-settle_time = 0.2
-
-[cluster.box]
-length = 0.3
-
-[numerics]
-time_step = 5e-4
-max_time = 4.0
-rest_speed = 0.05
-rest_duration = 0.2
-
-[sweep]
-samples = 2
-seed = 3
-)toml";
+// tests/db/data/cluster_sweep.toml: a shortened, unlined 45 deg flume, the wall 0.3 m past
+// the toe, a 5-rock cluster of C2's grading; two samples.
+std::string cluster_sweep_text() {
+    std::ifstream in(std::filesystem::path(ROCKFALL_TEST_DATA_DIR) / "cluster_sweep.toml");
+    REQUIRE(in);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
 
 scenario::ScenarioFile cluster_file() {
-    return scenario::parse_scenario_file(cluster_sweep, "cluster_sweep.toml");
+    return scenario::parse_scenario_file(cluster_sweep_text(), "cluster_sweep.toml");
 }
 
 std::int64_t count_rows(const db::ResultsDb& db, const std::string& sql) {
@@ -254,7 +214,7 @@ TEST_CASE(
 
 TEST_CASE("a cluster scenario's [sweep] table sets only method, samples and seed",
           "[db][cluster][sweep]") {
-    const std::string text = std::string(cluster_sweep) + "\n[sweep.rock]\nsize = 0.2\n";
+    const std::string text = cluster_sweep_text() + "\n[sweep.rock]\nsize = 0.2\n";
     try {
         scenario::parse_scenario_file(text, "cluster_sweep.toml");
         FAIL("a swept rock size was accepted on a cluster scenario");
