@@ -144,8 +144,9 @@ void run_worst(const QueryArgs& args) {
         throw std::invalid_argument("--n = " + std::to_string(args.count) + ": must be >= 1");
     }
     const db::ResultsDb database = open_database(args);
+    const db::Per per = db::parse_per(args.per);
     report::write_worst(std::cout, format_of(args), args.database, by,
-                        db::worst_samples(database, by, args.count));
+                        db::worst_samples(database, by, args.count, per), per);
 }
 
 std::vector<std::string> quantity_names() {
@@ -172,6 +173,14 @@ void add_common(CLI::App* cmd, QueryArgs& args) {
         ->capture_default_str();
 }
 
+void add_per(CLI::App* cmd, QueryArgs& args) {
+    cmd->add_option("--per", args.per,
+                    "What one observation is: each rock of each sample (rock), or each sample "
+                    "as a whole (sample: its largest value over its rocks; impulse: the total)")
+        ->check(CLI::IsMember({"rock", "sample"}))
+        ->capture_default_str();
+}
+
 void add_grouping(CLI::App* cmd, QueryArgs& args) {
     cmd->add_option("--by", args.group,
                     "Break down by shape kind, shape (family, named shape or generated), size "
@@ -180,11 +189,7 @@ void add_grouping(CLI::App* cmd, QueryArgs& args) {
     cmd->add_option("--size-classes", args.size_classes,
                     "Size class edges (m), ascending, e.g. 0.2,0.3,0.4; default: quartiles")
         ->delimiter(',');
-    cmd->add_option("--per", args.per,
-                    "What one observation is: each rock of each sample (rock), or each sample "
-                    "as a whole (sample: its largest value over its rocks; impulse: the total)")
-        ->check(CLI::IsMember({"rock", "sample"}))
-        ->capture_default_str();
+    add_per(cmd, args);
 }
 
 }  // namespace
@@ -257,13 +262,14 @@ void register_query(CLI::App& app) {
     add_common(curve, *args);
     curve->callback([args] { run_curve(*args); });
 
-    CLI::App* worst =
-        query->add_subcommand("worst", "The worst samples with their index and seed, for replay");
-    worst->add_option("--n", args->count, "How many samples")->capture_default_str();
+    CLI::App* worst = query->add_subcommand(
+        "worst", "The worst rocks (or samples) with their index and seed, for replay");
+    worst->add_option("--n", args->count, "How many rocks (samples)")->capture_default_str();
     worst->add_option("--by", args->worst_by, "Quantity to rank by: " + quantity_units())
         ->check(CLI::IsMember(quantity_names()))
         ->capture_default_str();
     add_common(worst, *args);
+    add_per(worst, *args);
     worst->callback([args] { run_worst(*args); });
 }
 

@@ -339,29 +339,40 @@ std::vector<Group> read_groups(const ResultsDb& db, Quantity quantity, const Gro
     return ordered;
 }
 
-std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::int64_t count) {
+std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::int64_t count,
+                                       Per per) {
     if (count < 1) {
         throw std::invalid_argument("number of samples = " + std::to_string(count) +
                                     ": must be >= 1");
     }
+    const bool per_rock = per == Per::rock;
     const std::string column(column_of(by));
+    // Per rock each rock's value (a wall quantity: its largest over its hits); per sample the
+    // sample's (info().per_sample over all its rocks), with rock -1.
+    const std::string value =
+        (per_rock ? std::string("MAX") : std::string(info(by).per_sample)) + "(" + column + ")";
+    const std::string observation = per_rock ? "sample, rock" : "sample";
     const std::string rank_sql =
-        needs_wall_hit(by)
-            ? "SELECT sample, rock, MAX(" + column + ") AS v FROM wall_impacts " +
-                  "GROUP BY sample, rock HAVING v IS NOT NULL ORDER BY v DESC, sample, rock " +
-                  "LIMIT ?"
-            : "SELECT sample, rock FROM outcomes WHERE " + column + " IS NOT NULL ORDER BY " +
-                  column + " DESC, sample, rock LIMIT ?";
+        "SELECT sample, " + std::string(per_rock ? "rock" : "-1") + ", " + value + " AS v FROM " +
+        (needs_wall_hit(by) ? "wall_impacts" : "outcomes") + " GROUP BY " + observation +
+        " HAVING v IS NOT NULL ORDER BY v DESC, " + observation + " LIMIT ?";
     sql::Statement ranked(db.handle(), db.path(), rank_sql);
     ranked.bind_int(1, count);
-    sql::Statement sample(db.handle(), db.path(),
-                          "SELECT seed, kind, size_m, mass_kg, zone_name, reach_m, max_speed_m_s, "
-                          "max_bounce_height_m, wall_hits FROM sample_results "
-                          "WHERE sample = ? AND rock = ?");
-    sql::Statement impacts(db.handle(), db.path(),
-                           "SELECT MAX(peak_force_N), MAX(energy_before_J), "
-                           "MAX(normal_impulse_N_s), MAX(impact_speed_m_s) FROM wall_impacts "
-                           "WHERE sample = ? AND rock = ?");
+    sql::Statement sample(
+        db.handle(), db.path(),
+        per_rock ? "SELECT seed, kind, size_m, mass_kg, zone_name, reach_m, max_speed_m_s, "
+                   "max_bounce_height_m, wall_hits FROM sample_results "
+                   "WHERE sample = ? AND rock = ?"
+                 : "SELECT s.seed, s.kind, s.size_m, s.mass_kg, z.name, MAX(o.reach_m), "
+                   "MAX(o.max_speed_m_s), MAX(o.max_bounce_height_m), SUM(o.wall_hits) "
+                   "FROM samples s JOIN outcomes o ON o.sample = s.sample "
+                   "LEFT JOIN zones z ON z.zone = s.zone WHERE s.sample = ? GROUP BY s.sample");
+    sql::Statement impacts(
+        db.handle(), db.path(),
+        std::string("SELECT MAX(peak_force_N), MAX(energy_before_J), ") +
+            (per_rock ? "MAX" : "SUM") +
+            "(normal_impulse_N_s), MAX(impact_speed_m_s) FROM wall_impacts WHERE sample = ?" +
+            (per_rock ? " AND rock = ?" : ""));
     std::vector<WorstSample> worst;
     while (ranked.step()) {
         WorstSample& w = worst.emplace_back();
@@ -369,7 +380,7 @@ std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::in
         w.rock = ranked.integer(1);
         sample.reset();
         sample.bind_int(1, w.sample);
-        sample.bind_int(2, w.rock);
+        if (per_rock) sample.bind_int(2, w.rock);
         if (!sample.step()) {
             throw DatabaseError(db.path().string() + ": sample " + std::to_string(w.sample) +
                                     " has wall impacts but no inputs or outcome: the file is "
@@ -387,7 +398,7 @@ std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::in
         w.wall_hits = sample.integer(8);
         impacts.reset();
         impacts.bind_int(1, w.sample);
-        impacts.bind_int(2, w.rock);
+        if (per_rock) impacts.bind_int(2, w.rock);
         impacts.step();
         w.peak_force = impacts.real(0);
         w.impact_energy = impacts.real(1);

@@ -217,7 +217,7 @@ void write_curve(std::ostream& out, QueryFormat format, const std::string& datab
 }
 
 void write_worst(std::ostream& out, QueryFormat format, const std::string& database,
-                 db::Quantity by, const std::vector<db::WorstSample>& worst) {
+                 db::Quantity by, const std::vector<db::WorstSample>& worst, db::Per per) {
     Table rows;
     rows.columns = {"rank",
                     "sample",
@@ -237,20 +237,29 @@ void write_worst(std::ostream& out, QueryFormat format, const std::string& datab
                     "impact_speed_m_s"};
     std::int64_t rank = 0;
     for (const db::WorstSample& w : worst) {
-        rows.rows.push_back({++rank, w.sample, w.rock, w.seed, w.kind, w.size, w.mass, w.zone,
-                             w.reach, w.max_speed, w.bounce_height, w.wall_hits, w.peak_force,
-                             w.impact_energy, w.impulse, w.impact_speed});
+        rows.rows.push_back({++rank, w.sample, w.rock >= 0 ? Cell{w.rock} : Cell{}, w.seed, w.kind,
+                             w.size, w.mass, w.zone, w.reach, w.max_speed, w.bounce_height,
+                             w.wall_hits, w.peak_force, w.impact_energy, w.impulse,
+                             w.impact_speed});
     }
     const std::string name(db::to_string(by));
+    const std::string what = observations(per);
     std::vector<std::string> lines = {
-        database + ": the " + std::to_string(worst.size()) + " rocks with the largest " + name +
-            " (" + std::string(db::unit_of(by)) + ")" +
-            (db::needs_wall_hit(by) ? ", among the rocks that hit the wall" : ""),
-        "wall columns are each rock's largest over its hits; replay its sample with `rockfall "
-        "simulate --from " +
-            database + " --sample SAMPLE`"};
-    nlohmann::ordered_json meta = {
-        {"database", database}, {"query", "worst"}, {"by", name}, {"unit", db::unit_of(by)}};
+        database + ": the " + std::to_string(worst.size()) + " " + what + " with the largest " +
+            name + " (" + std::string(db::unit_of(by)) + ")" +
+            (db::needs_wall_hit(by) ? ", among the " + what + " that hit the wall" : ""),
+        (per == db::Per::rock
+             ? "wall columns are each rock's largest over its hits"
+             : "rows are whole samples (no rock index): reach, speed and bounce height their "
+               "largest over the rocks, wall columns over all their rocks' hits (impulse the "
+               "total), mass the total") +
+            std::string("; replay a sample with `rockfall simulate --from ") + database +
+            " --sample SAMPLE`"};
+    nlohmann::ordered_json meta = {{"database", database},
+                                   {"query", "worst"},
+                                   {"by", name},
+                                   {"unit", db::unit_of(by)},
+                                   {"per", db::to_string(per)}};
     write(out, format, lines, std::move(meta), rows);
 }
 

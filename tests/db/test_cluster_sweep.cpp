@@ -171,6 +171,21 @@ TEST_CASE(
     for (std::size_t i = 0; i < impulses.size(); ++i) {
         CHECK(impulses[i] == Approx(impulse_sample[i]).epsilon(1e-12));
     }
+    // The worst sample by total impulse is the one with the largest sum over its rocks' hits;
+    // the worst rock by peak force has the largest force of any rock.
+    const std::vector<db::WorstSample> worst_sample =
+        db::worst_samples(db, db::Quantity::impulse, 1, db::Per::sample);
+    REQUIRE(worst_sample.size() == 1);
+    CHECK(worst_sample[0].rock == -1);
+    CHECK(worst_sample[0].impulse == Approx(impulse_sample.back()).epsilon(1e-12));
+    CHECK(worst_sample[0].mass == Approx(results[worst_sample[0].sample].inputs.mass));
+    const std::vector<db::WorstSample> worst_rock =
+        db::worst_samples(db, db::Quantity::peak_force, 1);
+    REQUIRE(worst_rock.size() == 1);
+    CHECK(worst_rock[0].peak_force == force_rock.back());
+    CHECK(results[worst_rock[0].sample]
+              .rocks[static_cast<std::size_t>(worst_rock[0].rock)]
+              .inputs.mass == worst_rock[0].mass);
     const db::Summary summary = db::summarize(db);
     CHECK(summary.samples == 2);
     CHECK(summary.rocks == 2 * rocks_per_sample);

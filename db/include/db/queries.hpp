@@ -228,8 +228,8 @@ ExceedanceCurve exceedance_curve(const ResultsDb& db, Quantity quantity, int poi
 
 /// A sample among the worst by some quantity, with what identifies and replays it.
 struct WorstSample {
-    /// Sample index (for `rockfall simulate --from DB --sample i`), rock index (0-based) and
-    /// the sample's engine seed.
+    /// Sample index (for `rockfall simulate --from DB --sample i`), rock index (0-based; -1
+    /// for a whole sample) and the sample's engine seed.
     std::int64_t sample = 0;
     std::int64_t rock = 0;
     std::uint64_t seed = 0;
@@ -251,10 +251,14 @@ struct WorstSample {
     double impact_speed = 0.0;
 };
 
-/// The `count` rocks with the largest `by` (each rock of each sample), largest first (ties by
-/// sample and rock index); rocks without a value (NULL, no wall hit) are never among them.
-/// count >= 1.
-std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::int64_t count);
+/// Per rock: the `count` rocks with the largest `by` (each rock of each sample), largest first
+/// (ties by sample and rock index), each with its own inputs and outcome. Per sample: the
+/// `count` samples with the largest value made of all their rocks (see Quantity), rock = -1,
+/// the sample's kind, size and (total) mass, its largest reach, speed and bounce height, its
+/// wall hits summed, and its wall quantities as in Quantity (impulse: the total). Those
+/// without a value (NULL, no wall hit) are never among them. count >= 1.
+std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::int64_t count,
+                                       Per per = Per::rock);
 
 /// What a stop rule needs of a stored sample's outcome.
 struct StoredOutcome {

@@ -30,9 +30,11 @@ void write_curve(std::ostream& out, QueryFormat format, const std::string& datab
 /// Which rocks or samples an exceedance probability is over, in words.
 std::string exceedance_trials(db::Quantity quantity, db::Per per = db::Per::rock);
 
-/// `worst`: one row per rock (sample and rock index), worst first, ranked by `by`.
+/// `worst`: one row per rock (sample and rock index) or, per sample, per sample (no rock
+/// index), worst first, ranked by `by`.
 void write_worst(std::ostream& out, QueryFormat format, const std::string& database,
-                 db::Quantity by, const std::vector<db::WorstSample>& worst);
+                 db::Quantity by, const std::vector<db::WorstSample>& worst,
+                 db::Per per = db::Per::rock);
 
 /// `summary`: the run, stop reasons, reach, wall and station shares, wall load percentiles.
 void write_summary(std::ostream& out, QueryFormat format, const std::string& database,
