@@ -34,8 +34,8 @@ struct ReleaseZone {
 };
 
 /// The most samples one sweep plans: 10^8. A sweep keeps a list of the samples to run (8 bytes
-/// each, 0.8 GB here) and its database grows by about 0.5 kB a sample (50 GB here); 10^8
-/// samples take about 23 days on one core at 50 samples/s.
+/// each, 0.8 GB here) and its database grows by about 0.6 kB a rock (60 GB here for one rock a
+/// sample); 10^8 samples take about 23 days on one core at 50 samples/s.
 inline constexpr std::int64_t max_samples = 100'000'000;
 
 /// What a sweep varies. Every input that a scenario file's [sweep] table leaves out is fixed
