@@ -336,6 +336,15 @@ std::vector<Group> read_groups(const ResultsDb& db, Quantity quantity, const Gro
         std::sort(group.values.begin(), group.values.end());
         ordered.push_back(std::move(group));
     }
+    if (ordered.empty() && grouping.by == GroupBy::size && !per_rock) {
+        sql::Statement sized(db.handle(), db.path(),
+                             "SELECT COUNT(*) FROM samples WHERE size_m IS NULL");
+        if (sized.step() && sized.integer(0) > 0) {
+            throw std::invalid_argument(
+                "--by size --per sample: the samples have no size (a cluster release's rocks "
+                "each have their own); group the rocks by size with --per rock");
+        }
+    }
     return ordered;
 }
 

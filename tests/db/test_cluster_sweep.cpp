@@ -186,6 +186,14 @@ TEST_CASE(
     CHECK(results[worst_rock[0].sample]
               .rocks[static_cast<std::size_t>(worst_rock[0].rock)]
               .inputs.mass == worst_rock[0].mass);
+    // A cluster release has no size of its own: grouping samples by size says so.
+    db::Grouping by_size;
+    by_size.by = db::GroupBy::size;
+    by_size.per = db::Per::sample;
+    CHECK_THROWS_WITH(db::read_groups(db, db::Quantity::reach, by_size),
+                      Catch::Contains("--per rock"));
+    by_size.per = db::Per::rock;
+    CHECK_FALSE(db::read_groups(db, db::Quantity::reach, by_size).empty());
     const db::Summary summary = db::summarize(db);
     CHECK(summary.samples == 2);
     CHECK(summary.rocks == 2 * rocks_per_sample);
