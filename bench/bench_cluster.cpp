@@ -76,8 +76,8 @@ void print(const Measurement& m) {
               << "  simulated s per CPU s:  " << m.simulated_rate() << "\n"
               << "  world steps:            " << m.outcome.coarse_steps << " coarse, "
               << m.outcome.fine_steps << " fine (per-rock: wall sub-steps of single rocks)\n"
-              << "  body-steps:             " << m.outcome.body_steps << " ("
-              << m.body_step_rate() << " per CPU s)\n"
+              << "  body-steps:             " << m.outcome.body_steps << " (" << m.body_step_rate()
+              << " per CPU s)\n"
               << "  rocks:                  " << m.outcome.rocks.size() << ", " << at_rest
               << " at rest; " << on_wall << " touched the wall, " << wall_hits << " hits\n";
 }
@@ -105,8 +105,8 @@ int run(const Options& options) {
     if (!options.skip_world) {
         engine::Scenario world = base;
         world.numerics.wall_stepping = engine::WallStepping::world;
-        runs.push_back(measure("(b) whole world at the fine step during impacts", world,
-                               options.seed));
+        runs.push_back(
+            measure("(b) whole world at the fine step during impacts", world, options.seed));
     }
     std::cout << std::setprecision(4);
     for (const Measurement& m : runs) {

@@ -115,7 +115,7 @@ void write_database(const Args& args, const fs::path& path) {
         batch.clear();
         for (std::int64_t i = first; i < std::min(first + args.batch, args.samples); ++i) {
             batch.push_back(db::testing::synthetic_record(options, i));
-            impacts += static_cast<std::int64_t>(batch.back().outcome.wall_hits.size());
+            impacts += static_cast<std::int64_t>(batch.back().rocks.at(0).outcome.wall_hits.size());
         }
         generate += seconds_since(start);
         start = std::chrono::steady_clock::now();

@@ -30,6 +30,7 @@ struct QueryArgs {
     // percentiles, exceed, curve: the breakdown.
     std::string group = "none";
     std::vector<double> size_classes;
+    std::string per = "rock";
     // percentiles.
     std::string of = "reach";
     std::vector<double> levels = {50.0, 90.0, 95.0, 99.0};
@@ -51,7 +52,8 @@ report::QueryFormat format_of(const QueryArgs& args) {
 }
 
 db::Grouping grouping_of(const QueryArgs& args) {
-    db::Grouping grouping{db::parse_group_by(args.group), args.size_classes};
+    db::Grouping grouping{db::parse_group_by(args.group), args.size_classes,
+                          db::parse_per(args.per)};
     if (!args.size_classes.empty() && grouping.by != db::GroupBy::size) {
         throw std::invalid_argument("--size-classes applies to --by size only");
     }
@@ -95,7 +97,7 @@ void run_percentiles(const QueryArgs& args) {
     const db::ResultsDb database = open_database(args);
     report::write_percentiles(std::cout, format_of(args), args.database,
                               db::percentiles(database, quantity, ps, grouping, args.confidence),
-                              grouping.by);
+                              grouping.by, grouping.per);
 }
 
 void run_exceed(const QueryArgs& args) {
@@ -112,7 +114,7 @@ void run_exceed(const QueryArgs& args) {
     report::write_exceedance(
         std::cout, format_of(args), args.database,
         db::exceedance(database, quantity, threshold, grouping, method, args.confidence),
-        grouping.by);
+        grouping.by, grouping.per);
 }
 
 void run_curve(const QueryArgs& args) {
@@ -129,7 +131,8 @@ void run_curve(const QueryArgs& args) {
                                                             std::string(db::to_string(quantity)) +
                                                             ": " + stem));
     }
-    report::write_curve(std::cout, format_of(args), args.database, curve, grouping.by);
+    report::write_curve(std::cout, format_of(args), args.database, curve, grouping.by,
+                        grouping.per);
     if (!args.svg.empty() && format_of(args) == report::QueryFormat::text) {
         std::cout << "figure written to " << args.svg << '\n';
     }
@@ -141,8 +144,9 @@ void run_worst(const QueryArgs& args) {
         throw std::invalid_argument("--n = " + std::to_string(args.count) + ": must be >= 1");
     }
     const db::ResultsDb database = open_database(args);
+    const db::Per per = db::parse_per(args.per);
     report::write_worst(std::cout, format_of(args), args.database, by,
-                        db::worst_samples(database, by, args.count));
+                        db::worst_samples(database, by, args.count, per), per);
 }
 
 std::vector<std::string> quantity_names() {
@@ -169,6 +173,14 @@ void add_common(CLI::App* cmd, QueryArgs& args) {
         ->capture_default_str();
 }
 
+void add_per(CLI::App* cmd, QueryArgs& args) {
+    cmd->add_option("--per", args.per,
+                    "What one observation is: each rock of each sample (rock), or each sample "
+                    "as a whole (sample: its largest value over its rocks; impulse: the total)")
+        ->check(CLI::IsMember({"rock", "sample"}))
+        ->capture_default_str();
+}
+
 void add_grouping(CLI::App* cmd, QueryArgs& args) {
     cmd->add_option("--by", args.group,
                     "Break down by shape kind, shape (family, named shape or generated), size "
@@ -177,6 +189,7 @@ void add_grouping(CLI::App* cmd, QueryArgs& args) {
     cmd->add_option("--size-classes", args.size_classes,
                     "Size class edges (m), ascending, e.g. 0.2,0.3,0.4; default: quartiles")
         ->delimiter(',');
+    add_per(cmd, args);
 }
 
 }  // namespace
@@ -249,13 +262,14 @@ void register_query(CLI::App& app) {
     add_common(curve, *args);
     curve->callback([args] { run_curve(*args); });
 
-    CLI::App* worst =
-        query->add_subcommand("worst", "The worst samples with their index and seed, for replay");
-    worst->add_option("--n", args->count, "How many samples")->capture_default_str();
+    CLI::App* worst = query->add_subcommand(
+        "worst", "The worst rocks (or samples) with their index and seed, for replay");
+    worst->add_option("--n", args->count, "How many rocks (samples)")->capture_default_str();
     worst->add_option("--by", args->worst_by, "Quantity to rank by: " + quantity_units())
         ->check(CLI::IsMember(quantity_names()))
         ->capture_default_str();
     add_common(worst, *args);
+    add_per(worst, *args);
     worst->callback([args] { run_worst(*args); });
 }
 

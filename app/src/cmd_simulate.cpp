@@ -49,8 +49,8 @@ struct Job {
     engine::Scenario scenario;
     std::uint64_t seed = 0;
     std::string source;
-    /// The outcome the database stored for the sample, to confirm the replay.
-    std::optional<engine::RockOutcome> stored;
+    /// The outcomes the database stored for the sample's rocks, to confirm the replay.
+    std::optional<std::vector<engine::RockOutcome>> stored;
 };
 
 Job job_from_database(const SimulateArgs& args) {
@@ -65,10 +65,26 @@ Job job_from_database(const SimulateArgs& args) {
     // The stored [sweep] table holds the named shapes a sample may have drawn.
     const scenario::ScenarioFile stored = scenario::parse_scenario_file(
         results.run().scenario_text, args.from + " (stored scenario)");
+    std::vector<engine::RockOutcome> rocks;
+    for (risk::RockResult& rock : record->rocks) rocks.push_back(std::move(rock.outcome));
     Job job{risk::sample_scenario(stored.sweep, stored.scenario, record->inputs),
             record->inputs.seed, args.from + " sample " + std::to_string(args.sample),
-            std::move(record->outcome)};
+            std::move(rocks)};
     return job;
+}
+
+// Every rock's reach, stop time and wall hits as stored (a cluster release: all its rocks).
+bool same_as_stored(const std::vector<engine::RockOutcome>& stored,
+                    const engine::Outcome& outcome) {
+    if (stored.size() != outcome.rocks.size()) return false;
+    for (std::size_t i = 0; i < stored.size(); ++i) {
+        const engine::RockOutcome& a = stored[i];
+        const engine::RockOutcome& b = outcome.rocks[i];
+        if (a.reach != b.reach || a.stop_time != b.stop_time ||
+            a.wall_hits.size() != b.wall_hits.size())
+            return false;
+    }
+    return true;
 }
 
 Job job_from_arguments(const SimulateArgs& args) {
@@ -223,9 +239,7 @@ void run_simulate(const SimulateArgs& args) {
         run_series.front = report::cluster_front(job.scenario, run_series.rocks, outcome);
     const report::RunInfo info{job.source, job.seed, elapsed.count()};
     // A replay must reproduce the stored outcome bit for bit (same binary); say so either way.
-    const bool replay_matches =
-        !job.stored || (job.stored->reach == outcome.rocks[0].reach &&
-                        job.stored->stop_time == outcome.rocks[0].stop_time);
+    const bool replay_matches = !job.stored || same_as_stored(*job.stored, outcome);
     if (args.json) {
         nlohmann::json json = report::outcome_json(job.scenario, outcome, info, run_series);
         if (job.stored) json["replay_matches_database"] = replay_matches;

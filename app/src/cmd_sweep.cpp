@@ -91,12 +91,6 @@ std::optional<risk::UntilRule> parse_until(const SweepArgs& args) {
 
 // The spec as run: the file's [sweep] table with the command line's overrides.
 risk::SweepSpec effective_spec(const scenario::ScenarioFile& file, const SweepArgs& args) {
-    if (file.scenario.rocks.empty()) {
-        throw std::invalid_argument(file.path.string() +
-                                    ": a sweep varies the scenario's first [[rocks]] entry, and "
-                                    "this scenario has only a [cluster]; sweeps over clusters "
-                                    "are not supported yet (run it with `rockfall simulate`)");
-    }
     risk::SweepSpec spec = file.has_sweep ? file.sweep : risk::sweep_defaults(file.scenario);
     if (args.samples) spec.samples = *args.samples;
     if (args.seed) spec.seed = *args.seed;
@@ -121,16 +115,14 @@ risk::SweepSpec effective_spec(const scenario::ScenarioFile& file, const SweepAr
 // Success flags of the samples already stored, for the --until rule after --resume.
 void replay_stored(const db::ResultsDb& results, const risk::UntilRule& rule,
                    risk::UntilMonitor& monitor) {
+    // A sample succeeds when any of its rocks does: its largest reach and its total of wall
+    // hits decide that.
     for (const db::StoredOutcome& stored : db::stored_outcomes(results)) {
         engine::RockOutcome outcome;
         outcome.reach = stored.reach;
         outcome.wall_hits.resize(static_cast<std::size_t>(stored.wall_hits));
         monitor.add(stored.sample, rule.success(outcome));
     }
-}
-
-db::SampleRecord to_record(risk::SampleResult&& result) {
-    return {std::move(result.inputs), std::move(result.outcome), std::move(result.trajectory)};
 }
 
 int run_sweep(const SweepArgs& args) {
@@ -208,8 +200,8 @@ int run_sweep(const SweepArgs& args) {
     };
     while (!runner.finished()) {
         for (risk::SampleResult& result : runner.collect(std::chrono::milliseconds(200))) {
-            if (monitor) monitor->add(result.inputs.index, until->success(result.outcome));
-            batch.push_back(to_record(std::move(result)));
+            if (monitor) monitor->add(result.inputs.index, until->success(result.rocks));
+            batch.push_back(std::move(result));
         }
         const auto now = std::chrono::steady_clock::now();
         // Batches bound the work lost to a crash (one second) and amortise the commit.

@@ -21,20 +21,22 @@ namespace {
 struct QuantityInfo {
     Quantity quantity;
     std::string_view name;
-    // Column in outcomes (per sample) or wall_impacts (per hit, maximum per sample).
+    // Column in outcomes (per rock) or wall_impacts (per hit).
     std::string_view column;
     std::string_view unit;
     bool wall;
+    // How a sample's value is made of its rocks' outcomes or its hits (all of its rocks).
+    std::string_view per_sample;
 };
 
 constexpr QuantityInfo quantity_table[] = {
-    {Quantity::reach, "reach", "reach_m", "m", false},
-    {Quantity::max_speed, "max_speed", "max_speed_m_s", "m/s", false},
-    {Quantity::bounce_height, "bounce_height", "max_bounce_height_m", "m", false},
-    {Quantity::impact_energy, "impact_energy", "energy_before_J", "J", true},
-    {Quantity::impact_speed, "impact_speed", "impact_speed_m_s", "m/s", true},
-    {Quantity::impulse, "impulse", "normal_impulse_N_s", "N s", true},
-    {Quantity::peak_force, "peak_force", "peak_force_N", "N", true},
+    {Quantity::reach, "reach", "reach_m", "m", false, "MAX"},
+    {Quantity::max_speed, "max_speed", "max_speed_m_s", "m/s", false, "MAX"},
+    {Quantity::bounce_height, "bounce_height", "max_bounce_height_m", "m", false, "MAX"},
+    {Quantity::impact_energy, "impact_energy", "energy_before_J", "J", true, "MAX"},
+    {Quantity::impact_speed, "impact_speed", "impact_speed_m_s", "m/s", true, "MAX"},
+    {Quantity::impulse, "impulse", "normal_impulse_N_s", "N s", true, "SUM"},
+    {Quantity::peak_force, "peak_force", "peak_force_N", "N", true, "MAX"},
 };
 
 const QuantityInfo& info(Quantity quantity) {
@@ -57,8 +59,10 @@ double round_to_significant(double value, int digits) {
 
 // The default size classes: edges at the quartiles of the stored sizes, rounded so that the
 // labels read well.
-std::vector<double> quartile_edges(const ResultsDb& db) {
-    sql::Statement select(db.handle(), db.path(), "SELECT size_m FROM samples WHERE size_m > 0");
+std::vector<double> quartile_edges(const ResultsDb& db, Per per) {
+    sql::Statement select(db.handle(), db.path(),
+                          std::string("SELECT size_m FROM ") +
+                              (per == Per::rock ? "rocks" : "samples") + " WHERE size_m > 0");
     std::vector<double> sizes;
     while (select.step()) sizes.push_back(select.real(0));
     std::vector<double> edges;
@@ -78,9 +82,10 @@ std::vector<double> quartile_edges(const ResultsDb& db) {
 // Maps each row's group column to a group index and names the groups.
 class Classifier {
   public:
-    Classifier(const ResultsDb& db, const Grouping& grouping) : by_(grouping.by) {
+    Classifier(const ResultsDb& db, const Grouping& grouping)
+        : by_(grouping.by), per_(grouping.per) {
         if (by_ == GroupBy::size) {
-            edges_ = grouping.size_edges.empty() ? quartile_edges(db) : grouping.size_edges;
+            edges_ = grouping.size_edges.empty() ? quartile_edges(db, per_) : grouping.size_edges;
             validate_size_edges(edges_);
         }
         if (by_ == GroupBy::zone) {
@@ -89,15 +94,16 @@ class Classifier {
         }
     }
 
-    // SQL expression of the group column, given samples as `s`.
-    std::string_view column() const {
+    // SQL expression of the group column, given samples as `s` and, per rock, rocks as `r`.
+    std::string column() const {
+        const std::string table = rock_columns() ? "r." : "s.";
         switch (by_) {
             case GroupBy::kind:
-                return "s.kind";
+                return table + "kind";
             case GroupBy::shape:
-                return "s.shape";
+                return table + "shape";
             case GroupBy::size:
-                return "s.size_m";
+                return table + "size_m";
             case GroupBy::zone:
                 return "s.zone";
             case GroupBy::none:
@@ -106,10 +112,20 @@ class Classifier {
         return "NULL";
     }
 
-    // The JOIN that brings samples `s` to a table aliased `alias`.
+    // The JOIN that brings the group column's table to a table aliased `alias` (with columns
+    // sample and, per rock, rock).
     std::string join(std::string_view alias) const {
+        const std::string a(alias);
         if (by_ == GroupBy::none) return "";
-        return " JOIN samples s ON s.sample = " + std::string(alias) + ".sample";
+        if (rock_columns()) {
+            return " JOIN rocks r ON r.sample = " + a + ".sample AND r.rock = " + a + ".rock";
+        }
+        return " JOIN samples s ON s.sample = " + a + ".sample";
+    }
+
+    // Whether the group column is a rock's (kind, shape and size per rock).
+    bool rock_columns() const {
+        return per_ == Per::rock && by_ != GroupBy::none && by_ != GroupBy::zone;
     }
 
     // Group index of the row's column `column`; keys_.size() for a row that fits no group.
@@ -197,6 +213,7 @@ class Classifier {
     }
 
     GroupBy by_;
+    Per per_;
     std::vector<double> edges_;
     std::map<std::int64_t, std::string> zone_names_;
     std::vector<std::int64_t> keys_;
@@ -256,13 +273,27 @@ void validate_size_edges(const std::vector<double>& edges) {
     }
 }
 
+std::string_view to_string(Per per) { return per == Per::rock ? "rock" : "sample"; }
+
+Per parse_per(std::string_view name) {
+    if (name == "rock") return Per::rock;
+    if (name == "sample") return Per::sample;
+    throw std::invalid_argument("unknown observation '" + std::string(name) +
+                                "': choose rock or sample");
+}
+
 std::vector<Group> read_groups(const ResultsDb& db, Quantity quantity, const Grouping& grouping) {
     Classifier classifier(db, grouping);
-    const std::string group_column(classifier.column());
+    const std::string group_column = classifier.column();
     const std::string column(column_of(quantity));
+    const bool per_rock = grouping.per == Per::rock;
+    // Per rock every value is one rock's (a wall quantity: the largest over its hits); per
+    // sample it is made of all of the sample's rocks (info().per_sample).
+    const std::string aggregate = per_rock ? "MAX" : std::string(info(quantity).per_sample);
+    const std::string by_observation = per_rock ? ".sample, w.rock" : ".sample";
     std::vector<Group> groups;
-    // Each row: the group column, the samples the row stands for (column 1), and optionally
-    // a value (column 2).
+    // Each row: the group column, the observations the row stands for (column 1), and
+    // optionally a value (column 2).
     const auto read = [&](const std::string& sql, bool has_value) {
         sql::Statement select(db.handle(), db.path(), sql);
         while (select.step()) {
@@ -273,18 +304,29 @@ std::vector<Group> read_groups(const ResultsDb& db, Quantity quantity, const Gro
             if (has_value && !select.is_null(2)) groups[index].values.push_back(select.real(2));
         }
     };
-    const std::string from_outcomes = " FROM outcomes o" + classifier.join("o");
+    const std::string count = grouping.by == GroupBy::none ? ", COUNT(*)" : ", 1";
     if (needs_wall_hit(quantity)) {
-        // Samples per group from the samples table alone (every sample is written with its
-        // outcome): one aggregate row without grouping, else one row per sample.
-        read("SELECT " + group_column + (grouping.by == GroupBy::none ? ", COUNT(*)" : ", 1") +
-                 " FROM samples s",
-             false);
-        read("SELECT " + group_column + ", 0, MAX(w." + column + ") FROM wall_impacts w" +
-                 classifier.join("w") + " GROUP BY w.sample",
+        // Observations per group from the rocks or samples table alone (every sample is
+        // written with its rocks' outcomes): one aggregate row without grouping, else one row
+        // per observation.
+        if (!per_rock) {
+            read("SELECT " + group_column + count + " FROM samples s", false);
+        } else if (grouping.by == GroupBy::zone) {
+            read("SELECT s.zone, 1 FROM rocks o JOIN samples s ON s.sample = o.sample", false);
+        } else {
+            read("SELECT " + group_column + count + " FROM rocks r", false);
+        }
+        read("SELECT " + group_column + ", 0, " + aggregate + "(w." + column +
+                 ") FROM wall_impacts w" + classifier.join("w") + " GROUP BY w" + by_observation,
+             true);
+    } else if (per_rock) {
+        read("SELECT " + group_column + ", 1, o." + column + " FROM outcomes o" +
+                 classifier.join("o"),
              true);
     } else {
-        read("SELECT " + group_column + ", 1, o." + column + from_outcomes, true);
+        read("SELECT " + group_column + ", 1, " + aggregate + "(o." + column + ") FROM outcomes o" +
+                 classifier.join("o") + " GROUP BY o.sample",
+             true);
     }
     std::vector<Group> ordered;
     for (const std::size_t index : classifier.output_order()) {
@@ -294,36 +336,60 @@ std::vector<Group> read_groups(const ResultsDb& db, Quantity quantity, const Gro
         std::sort(group.values.begin(), group.values.end());
         ordered.push_back(std::move(group));
     }
+    if (ordered.empty() && grouping.by == GroupBy::size && !per_rock) {
+        sql::Statement sized(db.handle(), db.path(),
+                             "SELECT COUNT(*) FROM samples WHERE size_m IS NULL");
+        if (sized.step() && sized.integer(0) > 0) {
+            throw std::invalid_argument(
+                "--by size --per sample: the samples have no size (a cluster release's rocks "
+                "each have their own); group the rocks by size with --per rock");
+        }
+    }
     return ordered;
 }
 
-std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::int64_t count) {
+std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::int64_t count,
+                                       Per per) {
     if (count < 1) {
         throw std::invalid_argument("number of samples = " + std::to_string(count) +
                                     ": must be >= 1");
     }
+    const bool per_rock = per == Per::rock;
     const std::string column(column_of(by));
+    // Per rock each rock's value (a wall quantity: its largest over its hits); per sample the
+    // sample's (info().per_sample over all its rocks), with rock -1.
+    const std::string value =
+        (per_rock ? std::string("MAX") : std::string(info(by).per_sample)) + "(" + column + ")";
+    const std::string observation = per_rock ? "sample, rock" : "sample";
     const std::string rank_sql =
-        needs_wall_hit(by)
-            ? "SELECT sample, MAX(" + column + ") AS v FROM wall_impacts GROUP BY sample " +
-                  "HAVING v IS NOT NULL ORDER BY v DESC, sample LIMIT ?"
-            : "SELECT sample FROM outcomes WHERE " + column + " IS NOT NULL ORDER BY " + column +
-                  " DESC, sample LIMIT ?";
+        "SELECT sample, " + std::string(per_rock ? "rock" : "-1") + ", " + value + " AS v FROM " +
+        (needs_wall_hit(by) ? "wall_impacts" : "outcomes") + " GROUP BY " + observation +
+        " HAVING v IS NOT NULL ORDER BY v DESC, " + observation + " LIMIT ?";
     sql::Statement ranked(db.handle(), db.path(), rank_sql);
     ranked.bind_int(1, count);
-    sql::Statement sample(db.handle(), db.path(),
-                          "SELECT seed, kind, size_m, mass_kg, zone_name, reach_m, max_speed_m_s, "
-                          "max_bounce_height_m, wall_hits FROM sample_results WHERE sample = ?");
-    sql::Statement impacts(db.handle(), db.path(),
-                           "SELECT MAX(peak_force_N), MAX(energy_before_J), "
-                           "MAX(normal_impulse_N_s), MAX(impact_speed_m_s) FROM wall_impacts "
-                           "WHERE sample = ?");
+    sql::Statement sample(
+        db.handle(), db.path(),
+        per_rock ? "SELECT seed, kind, size_m, mass_kg, zone_name, reach_m, max_speed_m_s, "
+                   "max_bounce_height_m, wall_hits FROM sample_results "
+                   "WHERE sample = ? AND rock = ?"
+                 : "SELECT s.seed, s.kind, s.size_m, s.mass_kg, z.name, MAX(o.reach_m), "
+                   "MAX(o.max_speed_m_s), MAX(o.max_bounce_height_m), SUM(o.wall_hits) "
+                   "FROM samples s JOIN outcomes o ON o.sample = s.sample "
+                   "LEFT JOIN zones z ON z.zone = s.zone WHERE s.sample = ? GROUP BY s.sample");
+    sql::Statement impacts(
+        db.handle(), db.path(),
+        std::string("SELECT MAX(peak_force_N), MAX(energy_before_J), ") +
+            (per_rock ? "MAX" : "SUM") +
+            "(normal_impulse_N_s), MAX(impact_speed_m_s) FROM wall_impacts WHERE sample = ?" +
+            (per_rock ? " AND rock = ?" : ""));
     std::vector<WorstSample> worst;
     while (ranked.step()) {
         WorstSample& w = worst.emplace_back();
         w.sample = ranked.integer(0);
+        w.rock = ranked.integer(1);
         sample.reset();
         sample.bind_int(1, w.sample);
+        if (per_rock) sample.bind_int(2, w.rock);
         if (!sample.step()) {
             throw DatabaseError(db.path().string() + ": sample " + std::to_string(w.sample) +
                                     " has wall impacts but no inputs or outcome: the file is "
@@ -341,6 +407,7 @@ std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::in
         w.wall_hits = sample.integer(8);
         impacts.reset();
         impacts.bind_int(1, w.sample);
+        if (per_rock) impacts.bind_int(2, w.rock);
         impacts.step();
         w.peak_force = impacts.real(0);
         w.impact_energy = impacts.real(1);
@@ -352,7 +419,8 @@ std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::in
 
 std::vector<StoredOutcome> stored_outcomes(const ResultsDb& db) {
     sql::Statement select(db.handle(), db.path(),
-                          "SELECT sample, reach_m, wall_hits FROM outcomes ORDER BY sample");
+                          "SELECT sample, MAX(reach_m), SUM(wall_hits) FROM outcomes "
+                          "GROUP BY sample ORDER BY sample");
     std::vector<StoredOutcome> outcomes;
     while (select.step()) {
         outcomes.push_back({select.integer(0), select.real(1), select.integer(2)});

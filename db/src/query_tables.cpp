@@ -164,11 +164,23 @@ Summary summarize(const ResultsDb& db, double confidence) {
 
     // One pass over the outcomes for the counts and the reach: a COUNT/SUM query and a
     // GROUP BY stop_reason would each scan the table again (and the GROUP BY sort it).
-    sql::Statement outcomes(handle, path, "SELECT stop_reason, wall_hits, reach_m FROM outcomes");
+    // Rows come in (sample, rock) order: the primary key's.
+    sql::Statement outcomes(handle, path,
+                            "SELECT stop_reason, wall_hits, reach_m, sample FROM outcomes");
     Group reach{{"all"}, 0, {}};
     std::int64_t hitting = 0;
+    std::int64_t samples_hitting = 0;
+    std::int64_t sample_rows = 0;
+    std::int64_t last_sample = -1;
+    bool last_hit = false;
     while (outcomes.step()) {
         ++reach.samples;
+        const std::int64_t sample = outcomes.integer(3);
+        if (sample != last_sample || sample_rows == 0) {
+            ++sample_rows;
+            last_sample = sample;
+            last_hit = false;
+        }
         const std::string_view reason = outcomes.text_view(0);
         auto known = std::find_if(summary.stop_reasons.begin(), summary.stop_reasons.end(),
                                   [&](const auto& entry) { return entry.first == reason; });
@@ -178,6 +190,10 @@ Summary summarize(const ResultsDb& db, double confidence) {
         ++known->second;
         const std::int64_t hits = outcomes.integer(1);
         hitting += hits > 0 ? 1 : 0;
+        if (hits > 0 && !last_hit) {
+            ++samples_hitting;
+            last_hit = true;
+        }
         summary.wall_impacts += hits;
         if (!outcomes.is_null(2)) reach.values.push_back(outcomes.real(2));
     }
@@ -186,8 +202,10 @@ Summary summarize(const ResultsDb& db, double confidence) {
                   return a.second != b.second ? a.second > b.second : a.first < b.first;
               });
     std::sort(reach.values.begin(), reach.values.end());
-    summary.samples = reach.samples;
-    summary.wall = share(hitting, summary.samples, confidence);
+    summary.samples = sample_rows;
+    summary.rocks = reach.samples;
+    summary.wall = share(hitting, summary.rocks, confidence);
+    summary.wall_samples = share(samples_hitting, summary.samples, confidence);
     if (!reach.values.empty()) summary.max_reach = reach.values.back();
     summary.reach = {Quantity::reach, confidence, {}};
     if (reach.samples > 0)

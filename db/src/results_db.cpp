@@ -81,6 +81,7 @@ void check_identity(sqlite3* db, const fs::path& path) {
     }
     sql::Statement exists(db, path, "SELECT 1 FROM sqlite_schema WHERE name = ?");
     for (const std::string_view name : schema::objects) {
+        if (version == 1 && name == "rocks") continue;
         exists.reset();
         exists.bind_text(1, name);
         if (!exists.step()) {
@@ -89,6 +90,21 @@ void check_identity(sqlite3* db, const fs::path& path) {
                                 Kind::bad_file);
         }
     }
+}
+
+std::int64_t stored_version(sqlite3* db, const fs::path& path) {
+    return pragma_integer(db, path, "user_version");
+}
+
+// The views of this version as TEMP views, so that a version-1 file reads as version 2.
+std::string temporary_views() {
+    std::string views(schema::views);
+    const std::string_view create = "CREATE VIEW";
+    for (std::size_t at = views.find(create); at != std::string::npos;
+         at = views.find(create, at)) {
+        views.replace(at, create.size(), "CREATE TEMP VIEW");
+    }
+    return std::string(schema::version1_adapter) + views;
 }
 
 void set_writer_pragmas(sqlite3* db, const fs::path& path) {
@@ -217,6 +233,7 @@ void build_database(const fs::path& temporary, const fs::path& path, const RunRe
                   "; PRAGMA user_version = " + std::to_string(schema_version),
               "creating the database");
     sql::exec(db, path, std::string(schema::definition), "creating the tables");
+    sql::exec(db, path, std::string(schema::views), "creating the views");
     sql::exec(db, path, std::string(schema::soil_definition), "creating the soil tables");
     insert_run(db, path, run, kind);
     if (fill) fill(db);
@@ -306,7 +323,17 @@ ResultsDb ResultsDb::open_checked(const fs::path& path, bool writable, bool any_
                                 path.string() + " summary` and `history` read it",
                             Kind::bad_file);
     }
+    const bool version1 = stored_version(connection.db, path) == 1;
+    if (version1 && writable) {
+        throw DatabaseError(path.string() +
+                                " has schema version 1 (one rock per sample, written by an older "
+                                "rockfall): this build reads it (query, fit, envelope, simulate "
+                                "--from) but does not add to it; continue it with the rockfall "
+                                "that made it, or start a new sweep",
+                            Kind::bad_file);
+    }
     if (!writable) {
+        if (version1) sql::exec(connection.db, path, temporary_views(), "reading schema version 1");
         // Queries scan whole tables: reading pages through a memory map rather than read()
         // calls saves the copies (measured a fifth of a one-million-row query). SQLite caps
         // the size at its compile-time limit.
@@ -373,8 +400,8 @@ void ResultsDb::write_batch(const std::vector<SampleRecord>& samples) {
 }
 
 std::vector<std::int64_t> ResultsDb::stored_samples() const {
-    // A sample is stored once its outcome is: both are written in the same transaction.
-    sql::Statement select(db_, path_, "SELECT sample FROM outcomes ORDER BY sample");
+    // A sample's inputs and its rocks' outcomes are written in the same transaction.
+    sql::Statement select(db_, path_, "SELECT sample FROM samples ORDER BY sample");
     std::vector<std::int64_t> indices;
     while (select.step()) indices.push_back(select.integer(0));
     return indices;
@@ -385,7 +412,8 @@ void ResultsDb::delete_samples_from(std::int64_t first) {
     begin_writing();
     sql::Transaction transaction(db_, path_);
     // Children first: the foreign keys point at samples.
-    for (const char* table : {"trajectories", "wall_impacts", "stations", "outcomes", "samples"}) {
+    for (const char* table :
+         {"trajectories", "wall_impacts", "stations", "outcomes", "rocks", "samples"}) {
         sql::Statement erase(db_, path_,
                              std::string("DELETE FROM ") + table + " WHERE sample >= ?");
         erase.bind_int(1, first);

@@ -35,9 +35,15 @@ Enum parse_stored(const std::array<Enum, N>& values, const std::string& name,
 constexpr std::string_view base_shape = "custom";
 constexpr std::string_view generated_shape = "generated";
 
-std::string shape_text(const risk::SampleInputs& in) {
-    if (in.kind != shapes::RockKind::custom) return std::string(shapes::to_string(in.kind));
-    return in.shape.empty() ? std::string(base_shape) : in.shape;
+std::string shape_text(shapes::RockKind kind, const std::string& shape) {
+    if (kind != shapes::RockKind::custom) return std::string(shapes::to_string(kind));
+    return shape.empty() ? std::string(base_shape) : shape;
+}
+
+// samples.shape or rocks.shape back to SampleInputs::shape.
+std::string shape_of(shapes::RockKind kind, const std::string& stored) {
+    if (kind != shapes::RockKind::custom) return {};
+    return stored == base_shape ? std::string() : stored;
 }
 
 engine::Vec3 vec3(const sql::Statement& row, int first) {
@@ -51,41 +57,46 @@ ResultsDb::Statements::Statements(sqlite3* db, const std::filesystem::path& path
              "INSERT INTO samples (sample, seed, zone, kind, size_m, density_kg_m3, mass_kg, "
              "friction, restitution, rolling_resistance, release_distance_m, release_lateral_m, "
              "speed_m_s, spin_rad_s, orientation_x_deg, orientation_y_deg, orientation_z_deg, "
-             "shape, sphericity, target_sphericity, shape_seed) "
-             "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+             "shape, sphericity, target_sphericity, shape_seed, rocks) "
+             "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
              true),
+      rock(db, path,
+           "INSERT INTO rocks (sample, rock, origin, kind, shape, size_m, density_kg_m3, mass_kg, "
+           "friction, restitution, rolling_resistance) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+           true),
       outcome(db, path,
-              "INSERT INTO outcomes (sample, stop_reason, stop_time_s, reach_m, final_x_m, "
+              "INSERT INTO outcomes (sample, rock, stop_reason, stop_time_s, reach_m, final_x_m, "
               "final_y_m, final_z_m, final_vx_m_s, final_vy_m_s, final_vz_m_s, final_speed_m_s, "
               "max_speed_m_s, max_kinetic_energy_J, max_bounce_height_m, velocity_change, "
-              "wall_hits) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+              "wall_hits) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
               true),
       station(db, path,
-              "INSERT INTO stations (sample, station, distance_from_toe_m, reached, time_s, "
+              "INSERT INTO stations (sample, rock, station, distance_from_toe_m, reached, time_s, "
               "speed_m_s, parallel_speed_m_s, angular_speed_rad_s, bounce_height_m, "
               "rolling_coefficient, translational_energy_J, rotational_energy_J) "
-              "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+              "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
               true),
-      impact(db, path,
-             "INSERT INTO wall_impacts (sample, hit, start_time_s, end_time_s, x_m, y_m, z_m, "
-             "impact_speed_m_s, normal_speed_m_s, normal_impulse_N_s, tangential_impulse_N_s, "
-             "tangential_impulse_x_N_s, tangential_impulse_y_N_s, tangential_impulse_z_N_s, "
-             "vx_before_m_s, vy_before_m_s, vz_before_m_s, vx_after_m_s, vy_after_m_s, "
-             "vz_after_m_s, wx_before_rad_s, wy_before_rad_s, wz_before_rad_s, wx_after_rad_s, "
-             "wy_after_rad_s, wz_after_rad_s, energy_before_J, energy_after_J, peak_force_N, "
-             "peak_time_s) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
-             "?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
-             true),
+      impact(
+          db, path,
+          "INSERT INTO wall_impacts (sample, rock, hit, start_time_s, end_time_s, x_m, y_m, z_m, "
+          "impact_speed_m_s, normal_speed_m_s, normal_impulse_N_s, tangential_impulse_N_s, "
+          "tangential_impulse_x_N_s, tangential_impulse_y_N_s, tangential_impulse_z_N_s, "
+          "vx_before_m_s, vy_before_m_s, vz_before_m_s, vx_after_m_s, vy_after_m_s, "
+          "vz_after_m_s, wx_before_rad_s, wy_before_rad_s, wz_before_rad_s, wx_after_rad_s, "
+          "wy_after_rad_s, wz_after_rad_s, energy_before_J, energy_after_J, peak_force_N, "
+          "peak_time_s) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+          "?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+          true),
       trajectory(db, path,
-                 "INSERT INTO trajectories (sample, time_s, x_m, y_m, z_m, vx_m_s, vy_m_s, "
+                 "INSERT INTO trajectories (sample, rock, time_s, x_m, y_m, z_m, vx_m_s, vy_m_s, "
                  "vz_m_s, wx_rad_s, wy_rad_s, wz_rad_s, orientation_w, orientation_x, "
                  "orientation_y, orientation_z, translational_energy_J, rotational_energy_J, "
-                 "kinetic_energy_J) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                 "kinetic_energy_J) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+                 "?)",
                  true) {}
 
 void ResultsDb::Statements::write(const SampleRecord& record) {
     const risk::SampleInputs& in = record.inputs;
-    const engine::RockOutcome& out = record.outcome;
     const std::int64_t index = in.index;
     sql::Binder binder(sample);
     binder.integer(index)
@@ -105,7 +116,7 @@ void ResultsDb::Statements::write(const SampleRecord& record) {
         .real(in.orientation_deg.x())
         .real(in.orientation_deg.y())
         .real(in.orientation_deg.z())
-        .text(shape_text(in))
+        .text(shape_text(in.kind, in.shape))
         .real(in.sphericity);
     // A generated rock's target and generator seed rebuild its hull (risk::sample_shape).
     if (in.shape == generated_shape) {
@@ -113,11 +124,34 @@ void ResultsDb::Statements::write(const SampleRecord& record) {
     } else {
         binder.null().null();
     }
-    binder.run();
+    binder.integer(static_cast<std::int64_t>(record.rocks.size())).run();
+    for (std::size_t rock = 0; rock < record.rocks.size(); ++rock) {
+        write_rock(index, static_cast<std::int64_t>(rock), record.rocks[rock]);
+    }
+}
+
+void ResultsDb::Statements::write_rock(std::int64_t index, std::int64_t rock_index,
+                                       const risk::RockResult& result) {
+    const risk::RockInputs& in = result.inputs;
+    sql::Binder(rock)
+        .integer(index)
+        .integer(rock_index)
+        .text(in.cluster ? "cluster" : "rocks")
+        .text(shapes::to_string(in.kind))
+        .text(shape_text(in.kind, in.shape))
+        .real(in.size)
+        .real(in.density)
+        .real(in.mass)
+        .real(in.material.friction)
+        .real(in.material.restitution)
+        .real(in.material.rolling_resistance)
+        .run();
+    const engine::RockOutcome& out = result.outcome;
 
     const engine::RockState& final_state = out.final_state;
     sql::Binder(outcome)
         .integer(index)
+        .integer(rock_index)
         .text(engine::to_string(out.stop))
         .real(out.stop_time)
         .real(out.reach)
@@ -141,6 +175,7 @@ void ResultsDb::Statements::write(const SampleRecord& record) {
         // SQL aggregates such as AVG(speed_m_s).
         sql::Binder(station)
             .integer(index)
+            .integer(rock_index)
             .integer(static_cast<std::int64_t>(i + 1))
             .real(s.distance_from_toe)
             .integer(s.reached ? 1 : 0)
@@ -159,6 +194,7 @@ void ResultsDb::Statements::write(const SampleRecord& record) {
         const engine::WallHit& h = out.wall_hits[i];
         sql::Binder(impact)
             .integer(index)
+            .integer(rock_index)
             .integer(static_cast<std::int64_t>(i + 1))
             .real(h.start_time)
             .real(h.end_time)
@@ -191,9 +227,10 @@ void ResultsDb::Statements::write(const SampleRecord& record) {
             .run();
     }
 
-    for (const engine::RockState& s : record.trajectory) {
+    for (const engine::RockState& s : result.trajectory) {
         sql::Binder(trajectory)
             .integer(index)
+            .integer(rock_index)
             .real(s.time)
             .real(s.position.x())
             .real(s.position.y())
@@ -240,24 +277,49 @@ std::optional<SampleRecord> read_sample(sqlite3* db, const std::filesystem::path
     in.speed = inputs.real(11);
     in.spin = inputs.real(12);
     in.orientation_deg = vec3(inputs, 13);
-    if (in.kind == shapes::RockKind::custom) {
-        const std::string shape = inputs.text(16);
-        in.shape = shape == base_shape ? std::string() : shape;
-    }
+    in.shape = shape_of(in.kind, inputs.text(16));
     in.sphericity = inputs.real(17);
     if (in.shape == generated_shape) {
         in.target_sphericity = inputs.real(18);
         in.shape_seed = sql::from_stored(inputs.integer(19));
     }
 
+    sql::Statement rocks(db, path,
+                         "SELECT origin, kind, shape, size_m, density_kg_m3, mass_kg, friction, "
+                         "restitution, rolling_resistance FROM rocks WHERE sample = ? "
+                         "ORDER BY rock");
+    rocks.bind_int(1, index);
+    while (rocks.step()) {
+        risk::RockInputs& rock = record.rocks.emplace_back().inputs;
+        rock.cluster = rocks.text(0) == "cluster";
+        rock.kind = parse_stored(rock_kinds, rocks.text(1), path, "rocks.kind", index);
+        rock.shape = shape_of(rock.kind, rocks.text(2));
+        rock.size = rocks.real(3);
+        rock.density = rocks.real(4);
+        rock.mass = rocks.real(5);
+        rock.material = {rocks.real(6), rocks.real(7), rocks.real(8)};
+    }
+    if (record.rocks.empty()) return std::nullopt;
+    for (std::size_t rock = 0; rock < record.rocks.size(); ++rock) {
+        if (!read_rock(db, path, index, static_cast<std::int64_t>(rock), record.rocks[rock])) {
+            return std::nullopt;
+        }
+    }
+    return record;
+}
+
+bool read_rock(sqlite3* db, const std::filesystem::path& path, std::int64_t index,
+               std::int64_t rock, risk::RockResult& result) {
     sql::Statement outcome(db, path,
                            "SELECT stop_reason, stop_time_s, reach_m, final_x_m, final_y_m, "
                            "final_z_m, final_vx_m_s, final_vy_m_s, final_vz_m_s, max_speed_m_s, "
                            "max_kinetic_energy_J, max_bounce_height_m, velocity_change "
-                           "FROM outcomes WHERE sample = ?");
+                           "FROM outcomes WHERE sample = ? AND rock = ?");
     outcome.bind_int(1, index);
-    if (!outcome.step()) return std::nullopt;
-    engine::RockOutcome& out = record.outcome;
+    outcome.bind_int(2, rock);
+    if (!outcome.step()) return false;
+    engine::RockOutcome& out = result.outcome;
+    out.size = result.inputs.size;
     out.stop = parse_stored(stop_reasons, outcome.text(0), path, "outcomes.stop_reason", index);
     out.stop_time = outcome.real(1);
     out.reach = outcome.real(2);
@@ -273,8 +335,9 @@ std::optional<SampleRecord> read_sample(sqlite3* db, const std::filesystem::path
                             "SELECT distance_from_toe_m, reached, time_s, speed_m_s, "
                             "parallel_speed_m_s, angular_speed_rad_s, bounce_height_m, "
                             "rolling_coefficient, translational_energy_J, rotational_energy_J "
-                            "FROM stations WHERE sample = ? ORDER BY station");
+                            "FROM stations WHERE sample = ? AND rock = ? ORDER BY station");
     stations.bind_int(1, index);
+    stations.bind_int(2, rock);
     while (stations.step()) {
         engine::StationCrossing& s = out.stations.emplace_back();
         s.distance_from_toe = stations.real(0);
@@ -297,8 +360,9 @@ std::optional<SampleRecord> read_sample(sqlite3* db, const std::filesystem::path
         "vx_before_m_s, vy_before_m_s, vz_before_m_s, vx_after_m_s, vy_after_m_s, vz_after_m_s, "
         "wx_before_rad_s, wy_before_rad_s, wz_before_rad_s, wx_after_rad_s, wy_after_rad_s, "
         "wz_after_rad_s, energy_before_J, energy_after_J, peak_force_N, peak_time_s "
-        "FROM wall_impacts WHERE sample = ? ORDER BY hit");
+        "FROM wall_impacts WHERE sample = ? AND rock = ? ORDER BY hit");
     impacts.bind_int(1, index);
+    impacts.bind_int(2, rock);
     while (impacts.step()) {
         engine::WallHit& h = out.wall_hits.emplace_back();
         h.start_time = impacts.real(0);
@@ -321,10 +385,11 @@ std::optional<SampleRecord> read_sample(sqlite3* db, const std::filesystem::path
                               "SELECT time_s, x_m, y_m, z_m, vx_m_s, vy_m_s, vz_m_s, wx_rad_s, "
                               "wy_rad_s, wz_rad_s, orientation_w, orientation_x, orientation_y, "
                               "orientation_z, translational_energy_J, rotational_energy_J "
-                              "FROM trajectories WHERE sample = ? ORDER BY time_s");
+                              "FROM trajectories WHERE sample = ? AND rock = ? ORDER BY time_s");
     trajectory.bind_int(1, index);
+    trajectory.bind_int(2, rock);
     while (trajectory.step()) {
-        engine::RockState& s = record.trajectory.emplace_back();
+        engine::RockState& s = result.trajectory.emplace_back();
         s.time = trajectory.real(0);
         s.position = vec3(trajectory, 1);
         s.velocity = vec3(trajectory, 4);
@@ -334,7 +399,7 @@ std::optional<SampleRecord> read_sample(sqlite3* db, const std::filesystem::path
         s.translational_energy = trajectory.real(14);
         s.rotational_energy = trajectory.real(15);
     }
-    return record;
+    return true;
 }
 
 }  // namespace rockfall::db

@@ -17,15 +17,23 @@ struct ResultsDb::Statements {
     Statements(sqlite3* db, const std::filesystem::path& path);
     /// Inserts one record's rows (inside the caller's transaction).
     void write(const SampleRecord& record);
+    /// Inserts one rock's rows (inputs, outcome, stations, wall impacts, trajectory).
+    void write_rock(std::int64_t index, std::int64_t rock_index, const risk::RockResult& result);
 
     sql::Statement sample;
+    sql::Statement rock;
     sql::Statement outcome;
     sql::Statement station;
     sql::Statement impact;
     sql::Statement trajectory;
 };
 
-/// Reads sample `index` with its outcome and rows; empty when absent.
+/// Reads rock `rock` of sample `index` (outcome, stations, wall impacts, trajectory) into
+/// `result`, whose inputs are read; false when its outcome is absent.
+bool read_rock(sqlite3* db, const std::filesystem::path& path, std::int64_t index,
+               std::int64_t rock, risk::RockResult& result);
+
+/// Reads sample `index` with its rocks and their rows; empty when absent.
 std::optional<SampleRecord> read_sample(sqlite3* db, const std::filesystem::path& path,
                                         std::int64_t index);
 

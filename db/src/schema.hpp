@@ -1,22 +1,32 @@
 #pragma once
-// The results database schema, version 1 (documented in docs/database.md).
+// The results database schema, version 2 (documented in docs/database.md).
 
 #include <array>
 #include <string_view>
 
 namespace rockfall::db::schema {
 
-/// CREATE TABLE and CREATE VIEW statements of the current schema version.
+/// CREATE TABLE statements of the current schema version.
 extern const std::string_view definition;
+
+/// CREATE VIEW statements of the current schema version (sample_results, impact_results,
+/// sample_impacts), over the tables of `definition`.
+extern const std::string_view views;
+
+/// TEMP views that present a version-1 file's tables as version 2's (rock = 0, a rocks view
+/// from samples); `views` then follow as TEMP views too.
+extern const std::string_view version1_adapter;
 
 /// CREATE TABLE statements of the soil-flow tables (soil_schema.cpp), in every file of this
 /// version; filled when run.kind = 'soil_flow'.
 extern const std::string_view soil_definition;
 
 /// Tables and views every database of this version has; open() checks they exist.
-inline constexpr std::array<std::string_view, 15> objects = {
+/// (A version-1 file has all but rocks.)
+inline constexpr std::array<std::string_view, 16> objects = {
     "run",          "zones",        "samples",         "outcomes",       "stations",
     "wall_impacts", "trajectories", "sample_results",  "impact_results", "sample_impacts",
-    "soil_run",     "soil_load",    "soil_load_steps", "soil_motion",    "soil_deposit"};
+    "soil_run",     "soil_load",    "soil_load_steps", "soil_motion",    "soil_deposit",
+    "rocks"};
 
 }  // namespace rockfall::db::schema

@@ -8,22 +8,23 @@ namespace rockfall::db {
 
 std::vector<WallImpact> read_wall_impacts(const ResultsDb& db) {
     sql::Statement rows(db.handle(), db.path(),
-                        "SELECT sample, hit, seed, kind, size_m, mass_kg, impact_speed_m_s, "
+                        "SELECT sample, rock, hit, seed, kind, size_m, mass_kg, impact_speed_m_s, "
                         "normal_speed_m_s, peak_force_N, energy_before_J FROM impact_results "
-                        "ORDER BY sample, hit");
+                        "ORDER BY sample, rock, hit");
     std::vector<WallImpact> impacts;
     while (rows.step()) {
         WallImpact& w = impacts.emplace_back();
         w.sample = rows.integer(0);
-        w.hit = rows.integer(1);
-        w.seed = sql::from_stored(rows.integer(2));
-        w.kind = rows.text(3);
-        w.size = rows.real(4);
-        w.mass = rows.real(5);
-        w.impact_speed = rows.real(6);
-        w.normal_speed = rows.real(7);
-        w.peak_force = rows.real(8);
-        w.energy_before = rows.real(9);
+        w.rock = rows.integer(1);
+        w.hit = rows.integer(2);
+        w.seed = sql::from_stored(rows.integer(3));
+        w.kind = rows.text(4);
+        w.size = rows.real(5);
+        w.mass = rows.real(6);
+        w.impact_speed = rows.real(7);
+        w.normal_speed = rows.real(8);
+        w.peak_force = rows.real(9);
+        w.energy_before = rows.real(10);
     }
     return impacts;
 }

@@ -73,7 +73,9 @@ SampleRecord synthetic_record(const SyntheticOptions& options, std::int64_t inde
     // 30 % reach a wall 4 m out.
     const double travel = 2.5 + 3.0 * normal(random) + 4.0 * (in.material.restitution - 0.35);
     const bool hits_wall = travel >= options.wall_distance;
-    engine::RockOutcome& out = record.outcome;
+    record.rocks.push_back({risk::rock_inputs(in), {}, {}});
+    engine::RockOutcome& out = record.rocks.front().outcome;
+    out.size = in.size;
     out.reach = hits_wall ? options.wall_distance - 0.5 * in.size : travel;
     const double toe_speed = std::sqrt(2.0 * gravity * (0.3 * in.release_distance + 1.0));
     out.max_speed = toe_speed * (1.0 + 0.1 * unit(random));
@@ -134,7 +136,7 @@ SampleRecord synthetic_record(const SyntheticOptions& options, std::int64_t inde
     }
 
     for (std::size_t k = 0; k < options.trajectory_points; ++k) {
-        engine::RockState& s = record.trajectory.emplace_back();
+        engine::RockState& s = record.rocks.front().trajectory.emplace_back();
         const double t =
             out.stop_time * static_cast<double>(k) /
             static_cast<double>(std::max<std::size_t>(options.trajectory_points - 1, 1));

@@ -2,11 +2,13 @@
 
 #include "cluster_release.hpp"
 
+#include "engine/simulation.hpp"
 #include "shapes/generators.hpp"
 #include "shapes/grading.hpp"
 #include "shapes/random.hpp"
 #include "shapes/release_box.hpp"
 
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -75,6 +77,25 @@ std::vector<PlacedRock> cluster_rocks(const shapes::Slope& slope, const Cluster&
         rocks[i].initial.position = centres[i];
     }
     return rocks;
+}
+
+RockSpec simulated_rock(const Scenario& scenario, std::size_t index, std::size_t count,
+                        double size) {
+    if (index < scenario.rocks.size()) return scenario.rocks[index].rock;
+    const Cluster& cluster = *scenario.cluster;
+    if (index + cluster.marked.size() >= count) {
+        return cluster.marked[index + cluster.marked.size() - count].rock;
+    }
+    RockSpec spec = cluster.rock;
+    spec.size = size;
+    if (cluster.sphericity > 0.0) {
+        char name[32];
+        std::snprintf(name, sizeof name, "sphericity %.2f", cluster.sphericity);
+        spec.kind = shapes::RockKind::custom;
+        spec.shape = std::make_shared<const shapes::CustomShape>(
+            shapes::CustomShape{name, shapes::make_rock(cluster.rock.kind, 1.0).hull});
+    }
+    return spec;
 }
 
 std::array<shapes::OrientedBox, 2> release_box_walls(const shapes::Slope& slope,

@@ -125,9 +125,9 @@ WallSubsteps substep_wall(const shapes::OrientedBox& wall, const WallRock& rock,
         ++result.substeps;
         const RockState after = rock_state(s, time + elapsed, rock.mass, rock.inertia);
         if (at.kind == WallContactAt::Kind::force || cell.in_contact()) {
-            cell.record(h, at.kind == WallContactAt::Kind::force ? std::optional(at.force)
-                                                                  : std::nullopt,
-                        before, after);
+            cell.record(
+                h, at.kind == WallContactAt::Kind::force ? std::optional(at.force) : std::nullopt,
+                before, after);
         }
         before = after;
     }

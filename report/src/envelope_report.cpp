@@ -48,6 +48,7 @@ nlohmann::json worst_json(const risk::ComparedImpact& c, const ImpactData& data)
     if (data.from_database) {
         const db::WallImpact& hit = data.hits[c.row];
         j["sample"] = hit.sample;
+        j["rock"] = hit.rock;
         j["hit"] = hit.hit;
         j["seed"] = hit.seed;
     } else {

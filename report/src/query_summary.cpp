@@ -17,7 +17,7 @@ struct Item {
 };
 
 std::string share_text(const db::Share& s, const std::string& confidence) {
-    if (s.trials == 0) return "no samples";
+    if (s.trials == 0) return "none";
     return std::to_string(s.count) + " of " + std::to_string(s.trials) + ", " +
            percent_text(static_cast<double>(s.count) / static_cast<double>(s.trials)) + " % (" +
            confidence + " % CI " + percent_text(s.interval.lower) + " to " +
@@ -52,6 +52,7 @@ std::vector<Item> items_of(const db::Summary& s) {
         {"seed", run.seed},
         {"method", run.method},
         {"samples_done", s.samples},
+        {"rocks_done", s.rocks},
         {"samples_planned", run.samples_planned},
         {"status", run.status},
         {"started_at", run.started_at},
@@ -62,18 +63,21 @@ std::vector<Item> items_of(const db::Summary& s) {
         {"confidence", s.confidence},
     };
     for (const auto& [reason, count] : s.stop_reasons) {
-        items.push_back({"stop_" + reason + "_samples", count});
+        items.push_back({"stop_" + reason + "_rocks", count});
     }
     add_percentiles(items, s.reach);
     items.push_back({"reach_max_m", s.max_reach});
-    items.push_back({"wall_hit_samples", s.wall.count});
+    items.push_back({"wall_hit_rocks", s.wall.count});
     items.push_back(
         {"wall_hit_share", share_value(s.wall), s.wall.interval.lower, s.wall.interval.upper});
+    items.push_back({"wall_hit_samples", s.wall_samples.count});
+    items.push_back({"wall_hit_sample_share", share_value(s.wall_samples),
+                     s.wall_samples.interval.lower, s.wall_samples.interval.upper});
     items.push_back({"wall_impacts", s.wall_impacts});
     for (const db::StationShare& st : s.stations) {
         const std::string prefix = "station_" + std::to_string(st.station) + "_";
         items.push_back({prefix + "distance_from_toe_m", st.distance_from_toe});
-        items.push_back({prefix + "reached_samples", st.reached.count});
+        items.push_back({prefix + "reached_rocks", st.reached.count});
         items.push_back({prefix + "reached_share", share_value(st.reached),
                          st.reached.interval.lower, st.reached.interval.upper});
     }
@@ -87,7 +91,7 @@ void print_load(std::ostream& out, const db::PercentileTable& table, const std::
     if (table.groups.empty() || table.groups[0].n == 0) return;
     const db::PercentileGroup& g = table.groups[0];
     const std::string unit(db::unit_of(table.quantity));
-    out << label << " over the " << g.n << " samples that hit the wall (largest per sample):\n";
+    out << label << " over the " << g.n << " rocks that hit the wall (largest per rock):\n";
     for (const db::PercentileRow& row : g.rows) {
         out << "  p" << fmt("%g", 100.0 * row.p) << ": " << fmt("%.4g", row.value) << ' ' << unit
             << " (" << confidence << " % CI " << bound(row.lower, unit.c_str()) << " to "
@@ -101,7 +105,9 @@ void print_summary_text(std::ostream& out, const std::string& database, const db
     out << "database: " << database << '\n'
         << "scenario: " << run.scenario_name << " (hash " << run.scenario_hash << ")\n"
         << "run: seed " << run.seed << ", " << run.method << ", " << s.samples << " of "
-        << run.samples_planned << " samples, " << run.status << '\n'
+        << run.samples_planned << " samples"
+        << (s.rocks != s.samples ? " (" + std::to_string(s.rocks) + " rocks)" : "") << ", "
+        << run.status << '\n'
         << "stop rule: " << run.stop_rule << '\n'
         << "started " << run.started_at << ", finished "
         << (run.finished_at.empty() ? "-" : run.finished_at) << '\n'
@@ -113,7 +119,7 @@ void print_summary_text(std::ostream& out, const std::string& database, const db
     out << "stop reasons:";
     for (const auto& [reason, count] : s.stop_reasons) {
         out << (reason == s.stop_reasons.front().first ? " " : ", ") << reason << ' ' << count
-            << " (" << percent_text(static_cast<double>(count) / static_cast<double>(s.samples))
+            << " (" << percent_text(static_cast<double>(count) / static_cast<double>(s.rocks))
             << " %)";
     }
     out << '\n';
@@ -123,8 +129,9 @@ void print_summary_text(std::ostream& out, const std::string& database, const db
             << " % CI " << bound(median.lower, "m") << " to " << bound(median.upper, "m")
             << "), maximum " << fmt("%.4g", s.max_reach) << " m\n";
     }
-    out << "wall hit by: " << share_text(s.wall, confidence) << "; " << s.wall_impacts
-        << " impacts\n";
+    out << "wall hit by: " << share_text(s.wall, confidence) << " rocks; " << s.wall_impacts
+        << " impacts\n"
+        << "samples with a rock on the wall: " << share_text(s.wall_samples, confidence) << '\n';
     for (const db::StationShare& st : s.stations) {
         out << "past station " << st.station << " (" << fmt("%g", st.distance_from_toe)
             << " m from the toe): " << share_text(st.reached, confidence) << '\n';
@@ -146,7 +153,7 @@ nlohmann::ordered_json percentiles_json(const db::PercentileTable& table) {
 }
 
 nlohmann::ordered_json share_json(const db::Share& s) {
-    return {{"samples", s.count},
+    return {{"count", s.count},
             {"of", s.trials},
             {"share", json_number(share_value(s))},
             {"ci_lower", s.interval.lower},
@@ -176,6 +183,7 @@ nlohmann::ordered_json summary_json(const std::string& database, const db::Summa
     }
     nlohmann::ordered_json wall = share_json(s.wall);
     wall["impacts"] = s.wall_impacts;
+    wall["samples"] = share_json(s.wall_samples);
     return {{"database", database},
             {"query", "summary"},
             {"run",
@@ -184,6 +192,7 @@ nlohmann::ordered_json summary_json(const std::string& database, const db::Summa
               {"seed", run.seed},
               {"method", run.method},
               {"samples_done", s.samples},
+              {"rocks_done", s.rocks},
               {"samples_planned", run.samples_planned},
               {"status", run.status},
               {"stop_rule", run.stop_rule},

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <memory>
 #include <string>
 
 namespace rockfall::report {
@@ -65,25 +64,10 @@ void print_hits(std::ostream& out, const engine::RockOutcome& rock) {
     }
 }
 
-// The rock as simulated (outcome index `index` of `count`): the scenario's, a marked cluster
-// rock (the last ones), or a drawn cluster rock with its drawn size. A drawn rock of a target
-// sphericity has its own hull; its spec here is labelled by the target, and its mass follows
-// from the size alone (the size is the volume-equivalent diameter).
+// The rock as simulated.
 engine::RockSpec rock_spec(const engine::Scenario& scenario, const engine::RockOutcome& rock,
                            std::size_t index, std::size_t count) {
-    if (index < scenario.rocks.size()) return scenario.rocks[index].rock;
-    const engine::Cluster& cluster = *scenario.cluster;
-    if (index + cluster.marked.size() >= count) {
-        return cluster.marked[index + cluster.marked.size() - count].rock;
-    }
-    engine::RockSpec spec = cluster.rock;
-    spec.size = rock.size;
-    if (cluster.sphericity > 0.0) {
-        spec.kind = shapes::RockKind::custom;
-        spec.shape = std::make_shared<const shapes::CustomShape>(shapes::CustomShape{
-            fmt("sphericity %.2f", cluster.sphericity), shapes::make_rock(cluster.rock.kind, 1.0).hull});
-    }
-    return spec;
+    return engine::simulated_rock(scenario, index, count, rock.size);
 }
 
 // The hits' count, largest peak normal force (N) and total normal impulse (N s).
@@ -218,9 +202,8 @@ void print_summary(std::ostream& out, const engine::Scenario& scenario,
         const auto& rock = outcome.rocks[i];
         const engine::RockSpec spec = rock_spec(scenario, rock, i, outcome.rocks.size());
         out << "rock " << i + 1 << (rock.name.empty() ? "" : " \"" + rock.name + "\"") << ": "
-            << rock_label(spec) << ' ' << fmt("%.3f m", spec.size)
-            << ", " << fmt("%.0f kg/m3", spec.density) << ", " << fmt("%.2f kg", rock_mass(spec))
-            << '\n';
+            << rock_label(spec) << ' ' << fmt("%.3f m", spec.size) << ", "
+            << fmt("%.0f kg/m3", spec.density) << ", " << fmt("%.2f kg", rock_mass(spec)) << '\n';
         out << "  stopped: " << engine::to_string(rock.stop) << " at "
             << fmt("%.3f s", rock.stop_time) << '\n';
         const auto& p = rock.final_state.position;
@@ -285,22 +268,23 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
                  {"force_history",
                   {{"columns", {"time_s", "normal_N", "tangential_N"}}, {"rows", history}}}});
         }
-        rocks.push_back({{"name", rock.name.empty() ? nlohmann::json(nullptr) : nlohmann::json(rock.name)},
-                         {"kind", shapes::to_string(spec.kind)},
-                         {"shape_name", spec.shape ? nlohmann::json(spec.shape->name) : nullptr},
-                         {"size_m", spec.size},
-                         {"density_kg_m3", spec.density},
-                         {"mass_kg", rock_mass(spec)},
-                         {"stop_reason", engine::to_string(rock.stop)},
-                         {"stop_time_s", rock.stop_time},
-                         {"reach_m", rock.reach},
-                         {"final_position_m", vec_json(rock.final_state.position)},
-                         {"max_speed_m_s", rock.max_speed},
-                         {"max_kinetic_energy_J", rock.max_kinetic_energy},
-                         {"max_bounce_height_m", rock.max_bounce_height},
-                         {"velocity_change", rock.velocity_change},
-                         {"stations", stations},
-                         {"wall_hits", hits}});
+        rocks.push_back(
+            {{"name", rock.name.empty() ? nlohmann::json(nullptr) : nlohmann::json(rock.name)},
+             {"kind", shapes::to_string(spec.kind)},
+             {"shape_name", spec.shape ? nlohmann::json(spec.shape->name) : nullptr},
+             {"size_m", spec.size},
+             {"density_kg_m3", spec.density},
+             {"mass_kg", rock_mass(spec)},
+             {"stop_reason", engine::to_string(rock.stop)},
+             {"stop_time_s", rock.stop_time},
+             {"reach_m", rock.reach},
+             {"final_position_m", vec_json(rock.final_state.position)},
+             {"max_speed_m_s", rock.max_speed},
+             {"max_kinetic_energy_J", rock.max_kinetic_energy},
+             {"max_bounce_height_m", rock.max_bounce_height},
+             {"velocity_change", rock.velocity_change},
+             {"stations", stations},
+             {"wall_hits", hits}});
         const HitTotals totals = hit_totals(rock);
         nlohmann::json& entry = rocks.back();
         entry["wall_hit_count"] = totals.count;

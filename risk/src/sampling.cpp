@@ -2,6 +2,7 @@
 
 #include "sample_shapes.hpp"
 
+#include "engine/simulation.hpp"
 #include "risk/number_text.hpp"
 #include "risk/random_release.hpp"
 #include "shapes/slope.hpp"
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace rockfall::risk {
 namespace {
@@ -181,7 +183,45 @@ std::string to_string(SweepSpec::Method method) {
     return "unknown";
 }
 
+namespace {
+
+void check_sample_count(std::vector<SweepProblem>& problems, const SweepSpec& spec) {
+    if (spec.samples < 1) {
+        problems.push_back({"sweep.samples", std::to_string(spec.samples) + ": must be >= 1"});
+    } else if (spec.samples > max_samples) {
+        problems.push_back({"sweep.samples", std::to_string(spec.samples) + ": must be in [1, " +
+                                                 std::to_string(max_samples) +
+                                                 "], the most one sweep plans"});
+    }
+}
+
+// A cluster release: the engine draws its rocks from the seed (engine/cluster_release.cpp), so
+// only the seed is drawn here, on the stream a rock sample's engine seed comes from.
+SampleInputs cluster_sample(const SweepSpec& spec, const engine::Cluster& cluster,
+                            std::int64_t index) {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    SampleInputs s;
+    s.index = index;
+    s.seed = hash(spec.seed, Stream::engine, static_cast<std::uint64_t>(index));
+    s.zone = 0;
+    s.kind = cluster.rock.kind;
+    s.sphericity = nan;
+    s.size = nan;
+    s.density = cluster.rock.density;
+    s.material = cluster.rock.material;
+    s.release_distance = nan;
+    s.release_lateral = nan;
+    s.speed = nan;
+    s.spin = nan;
+    s.orientation_deg = engine::Vec3::Constant(nan);
+    s.mass = nan;
+    return s;
+}
+
+}  // namespace
+
 SweepSpec sweep_defaults(const engine::Scenario& base) {
+    if (base.cluster) return SweepSpec{};
     if (base.rocks.empty()) {
         throw std::invalid_argument("sweep_defaults: the base scenario has no rock to vary");
     }
@@ -210,17 +250,15 @@ SweepSpec sweep_defaults(const engine::Scenario& base) {
 
 std::vector<SweepProblem> find_problems(const SweepSpec& spec, const engine::Scenario& base) {
     std::vector<SweepProblem> problems;
+    if (base.cluster) {
+        check_sample_count(problems, spec);
+        return problems;
+    }
     if (base.rocks.empty()) {
         problems.push_back({"rocks", "[]: a sweep varies the scenario's first rock; add one"});
         return problems;
     }
-    if (spec.samples < 1) {
-        problems.push_back({"sweep.samples", std::to_string(spec.samples) + ": must be >= 1"});
-    } else if (spec.samples > max_samples) {
-        problems.push_back({"sweep.samples", std::to_string(spec.samples) + ": must be in [1, " +
-                                                 std::to_string(max_samples) +
-                                                 "], the most one sweep plans"});
-    }
+    check_sample_count(problems, spec);
     const bool shapes_ok = detail::check_shapes(problems, spec, base);
     if (spec.sphericity) {
         check_distribution(problems, "sweep.rock.sphericity", *spec.sphericity, "");
@@ -288,6 +326,7 @@ std::array<double, sample_dimensions> unit_point(const SweepSpec& spec, std::int
 }
 
 SampleInputs draw_sample(const SweepSpec& spec, const engine::Scenario& base, std::int64_t index) {
+    if (base.cluster) return cluster_sample(spec, *base.cluster, index);
     assert(!base.rocks.empty() && !spec.zones.empty());
     const std::array<double, sample_dimensions> u = unit_point(spec, index);
 
@@ -333,6 +372,7 @@ SampleInputs draw_sample(const SweepSpec& spec, const engine::Scenario& base, st
 }
 
 engine::Scenario sample_scenario(const engine::Scenario& base, const SampleInputs& inputs) {
+    if (base.cluster) return base;
     assert(!base.rocks.empty());
     engine::RockRelease rock = base.rocks.front();
     rock.rock.kind = inputs.kind;
@@ -362,12 +402,41 @@ engine::Scenario sample_scenario(const engine::Scenario& base, const SampleInput
 
 engine::Scenario sample_scenario(const SweepSpec& spec, const engine::Scenario& base,
                                  const SampleInputs& inputs) {
+    if (base.cluster) return base;
     if (inputs.custom_shape != nullptr || inputs.kind != shapes::RockKind::custom) {
         return sample_scenario(base, inputs);
     }
     SampleInputs resolved = inputs;
     resolved.custom_shape = sample_shape(spec, base, inputs);
     return sample_scenario(base, resolved);
+}
+
+RockInputs rock_inputs(const SampleInputs& inputs) {
+    return {false,          inputs.kind, inputs.shape,   inputs.size,
+            inputs.density, inputs.mass, inputs.material};
+}
+
+std::vector<RockInputs> rock_inputs(const engine::Scenario& scenario, const SampleInputs& inputs,
+                                    const std::vector<engine::RockOutcome>& outcomes) {
+    if (!scenario.cluster) {
+        assert(outcomes.size() == 1 && scenario.rocks.size() == 1);
+        return {rock_inputs(inputs)};
+    }
+    assert(outcomes.size() >= scenario.rocks.size());
+    std::vector<RockInputs> rocks;
+    rocks.reserve(outcomes.size());
+    for (std::size_t i = 0; i < outcomes.size(); ++i) {
+        const bool in_cluster = i >= scenario.rocks.size();
+        const engine::RockSpec spec =
+            engine::simulated_rock(scenario, i, outcomes.size(), outcomes[i].size);
+        const double size = outcomes[i].size;
+        const double volume = std::acos(-1.0) / 6.0 * size * size * size;
+        // A [[rocks]] entry's own shape is its spec's (""); a cluster rock's is named.
+        const std::string shape = in_cluster && spec.shape ? spec.shape->name : "";
+        rocks.push_back({in_cluster, spec.kind, shape, size, spec.density, spec.density * volume,
+                         spec.material});
+    }
+    return rocks;
 }
 
 }  // namespace rockfall::risk

@@ -19,15 +19,27 @@ SampleResult run_sample(const SweepSpec& spec, const engine::Scenario& base, std
     result.inputs = draw_sample(spec, base, index);
     const engine::Scenario scenario = sample_scenario(base, result.inputs);
     engine::RunOptions options;
+    std::vector<std::vector<engine::RockState>> trajectories;
     if (trajectory_interval > 0.0) {
         options.trajectory_interval = trajectory_interval;
-        options.trajectory = [&result](int, const engine::RockState& state) {
-            result.trajectory.push_back(state);
+        options.trajectory = [&trajectories](int rock, const engine::RockState& state) {
+            const auto slot = static_cast<std::size_t>(rock);
+            if (slot >= trajectories.size()) trajectories.resize(slot + 1);
+            trajectories[slot].push_back(state);
         };
     }
     engine::Outcome outcome = engine::simulate(scenario, result.inputs.seed, options);
-    assert(outcome.rocks.size() == 1);
-    result.outcome = std::move(outcome.rocks.front());
+    assert(scenario.cluster || outcome.rocks.size() == 1);
+    std::vector<RockInputs> inputs = rock_inputs(scenario, result.inputs, outcome.rocks);
+    trajectories.resize(outcome.rocks.size());
+    result.rocks.reserve(outcome.rocks.size());
+    double mass = 0.0;
+    for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
+        mass += inputs[i].mass;
+        result.rocks.push_back(
+            {std::move(inputs[i]), std::move(outcome.rocks[i]), std::move(trajectories[i])});
+    }
+    if (scenario.cluster) result.inputs.mass = mass;
     return result;
 }
 
@@ -105,6 +117,11 @@ bool UntilRule::success(const engine::RockOutcome& outcome) const {
             return outcome.reach >= distance;
     }
     return false;
+}
+
+bool UntilRule::success(const std::vector<RockResult>& rocks) const {
+    return std::any_of(rocks.begin(), rocks.end(),
+                       [this](const RockResult& rock) { return success(rock.outcome); });
 }
 
 std::string UntilRule::describe() const {

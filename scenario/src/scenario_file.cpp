@@ -189,13 +189,13 @@ Parsed parse(std::string_view text, const std::string& source, const fs::path& b
     // The sweep's defaults and checks need a valid base; its keys are read in any case, so that
     // their problems come with the base's.
     const bool base_valid = problems.empty();
-    if (base_valid && !parsed.scenario.rocks.empty()) {
+    if (base_valid && (!parsed.scenario.rocks.empty() || parsed.scenario.cluster)) {
         parsed.sweep = risk::sweep_defaults(parsed.scenario);
     }
     if (const toml::node* sweep = root.get("sweep")) {
         parsed.has_sweep = true;
         detail::Context context{source, sources, problems};
-        detail::read_sweep(*sweep, parsed.sweep, context);
+        detail::read_sweep(*sweep, parsed.sweep, context, parsed.scenario.cluster.has_value());
         if (base_valid) {
             std::vector<ScenarioProblem> sweep_problems =
                 detail::find_sweep_problems(parsed.sweep, parsed.scenario, &sources);
@@ -228,7 +228,11 @@ ScenarioFile file_from(std::string text, const std::string& source, const fs::pa
                       " with its base scenarios and meshes resolved: every key "
                       "written out.\n" +
                       format_scenario(loaded.scenario);
-        if (parsed.has_sweep) loaded.text += "\n" + detail::format_sweep(parsed.sweep);
+        if (parsed.has_sweep) {
+            loaded.text +=
+                "\n" + (loaded.scenario.cluster ? detail::format_cluster_sweep(parsed.sweep)
+                                                : detail::format_sweep(parsed.sweep));
+        }
     }
     return loaded;
 }

@@ -171,13 +171,10 @@ void read_distribution(TableReader& parent, std::string_view key, risk::Distribu
     if (context.problems.size() == problems_before) out = d;
 }
 
-void read_sweep(const toml::node& node, risk::SweepSpec& spec, Context& context) {
-    const auto* table = node.as_table();
-    if (table == nullptr) {
-        context.report(node, "sweep", describe(node) + ": must be a table ([sweep])");
-        return;
-    }
-    TableReader r(*table, "sweep", context);
+namespace {
+
+// method, samples and seed: what every sweep has.
+void read_sweep_header(TableReader& r, risk::SweepSpec& spec) {
     std::array<std::string_view, sweep_method_names.size()> methods;
     for (std::size_t i = 0; i < methods.size(); ++i) methods[i] = sweep_method_names[i].name;
     if (const auto index = read_choice(r, "method", methods)) {
@@ -187,6 +184,37 @@ void read_sweep(const toml::node& node, risk::SweepSpec& spec, Context& context)
     std::int64_t seed = static_cast<std::int64_t>(spec.seed);
     read_integer(r, "seed", seed, 0);
     spec.seed = static_cast<std::uint64_t>(seed);
+}
+
+// A cluster scenario's samples are whole releases: every key but the header's is refused.
+void refuse_for_cluster(TableReader& r, const toml::table& table, Context& context) {
+    for (const auto& [key, value] : table) {
+        const std::string_view name = key.str();
+        if (name == "method" || name == "samples" || name == "seed") continue;
+        r.get(name);
+        context.report(value, r.path(name),
+                       "cannot be swept over a cluster: each sample of a scenario with "
+                       "[cluster] is one whole release, its rocks' sizes and orientations drawn "
+                       "from the [cluster] table by the sample's seed, and its [[rocks]] kept "
+                       "as written; a [sweep] table there sets only method, samples and seed");
+    }
+    r.finish();
+}
+
+}  // namespace
+
+void read_sweep(const toml::node& node, risk::SweepSpec& spec, Context& context, bool cluster) {
+    const auto* table = node.as_table();
+    if (table == nullptr) {
+        context.report(node, "sweep", describe(node) + ": must be a table ([sweep])");
+        return;
+    }
+    TableReader r(*table, "sweep", context);
+    read_sweep_header(r, spec);
+    if (cluster) {
+        refuse_for_cluster(r, *table, context);
+        return;
+    }
     read(r, "random_orientation", spec.random_orientation, "", {});
     read(r, "lateral_margin", spec.lateral_margin, "m", non_negative());
     with_table(r, "rock", [&](TableReader& rock) {

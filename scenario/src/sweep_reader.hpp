@@ -76,8 +76,12 @@ void read_distribution(TableReader& parent, std::string_view key, risk::Distribu
 void read_sweep_shapes(TableReader& rock, risk::SweepSpec& spec);
 
 // Fills `spec` from the [sweep] node. Start `spec` from risk::sweep_defaults(base), so that a key
-// left out keeps the base rock's value. Wrong types and unknown keys go to `context`.
-void read_sweep(const toml::node& node, risk::SweepSpec& spec, Context& context);
+// left out keeps the base rock's value. Wrong types and unknown keys go to `context`. With
+// `cluster` (a scenario with [cluster], whose samples are whole releases drawn by the engine
+// from the sample's seed) only method, samples and seed are read; every other key is reported,
+// naming it.
+void read_sweep(const toml::node& node, risk::SweepSpec& spec, Context& context,
+                bool cluster = false);
 
 // Problems of a spec against a valid base scenario: risk::find_problems, and the supports of
 // size, density, the material coefficients and each zone's release distance checked with the
@@ -91,5 +95,8 @@ std::vector<ScenarioProblem> find_sweep_problems(const risk::SweepSpec& spec,
 // identical spec. Throws std::invalid_argument for a seed above 2^63 - 1 (TOML integers are
 // signed 64-bit).
 std::string format_sweep(const risk::SweepSpec& spec);
+
+// The [sweep] table of a cluster scenario: method, samples and seed (read_cluster_sweep).
+std::string format_cluster_sweep(const risk::SweepSpec& spec);
 
 }  // namespace rockfall::scenario::detail

@@ -79,7 +79,7 @@ void write_distributions(std::ostream& out, const S& object,
 
 }  // namespace
 
-std::string format_sweep(const risk::SweepSpec& spec) {
+std::string format_cluster_sweep(const risk::SweepSpec& spec) {
     if (spec.seed > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
         throw std::invalid_argument("sweep.seed = " + std::to_string(spec.seed) +
                                     ": a scenario file holds seeds in [0, 2^63 - 1] only");
@@ -91,6 +91,12 @@ std::string format_sweep(const risk::SweepSpec& spec) {
     }
     out << "samples = " << spec.samples << "\n";
     out << "seed = " << spec.seed << "\n";
+    return out.str();
+}
+
+std::string format_sweep(const risk::SweepSpec& spec) {
+    std::ostringstream out;
+    out << format_cluster_sweep(spec);
     out << "random_orientation = " << (spec.random_orientation ? "true" : "false") << "\n";
     out << "lateral_margin = " << format_number(spec.lateral_margin) << "\n";
     out << "\n[sweep.rock]\n";

@@ -22,9 +22,9 @@ echo "after the crash: $stored samples stored"
 
 "$rockfall" sweep "$scenario" --db "$work/crashed.db" --threads 2 --quiet --resume "$@" >/dev/null
 
-for table in samples outcomes stations wall_impacts; do
-    a=$(sqlite3 "$work/whole.db" "SELECT * FROM $table ORDER BY 1, 2")
-    b=$(sqlite3 "$work/crashed.db" "SELECT * FROM $table ORDER BY 1, 2")
+for table in samples rocks outcomes stations wall_impacts; do
+    a=$(sqlite3 "$work/whole.db" "SELECT * FROM $table ORDER BY 1, 2, 3")
+    b=$(sqlite3 "$work/crashed.db" "SELECT * FROM $table ORDER BY 1, 2, 3")
     [ "$a" = "$b" ] || { echo "table $table differs after the resume"; exit 1; }
     echo "$table: $(wc -l <<<"$a") rows, identical"
 done

@@ -1,5 +1,7 @@
 #include "db_test_support.hpp"
 
+#include <sqlite3.h>
+
 #include <algorithm>
 #include <atomic>
 #include <fstream>
@@ -55,6 +57,13 @@ void write_bytes(const fs::path& path, const std::string& bytes) {
     out << bytes;
 }
 
+void run_sql(const fs::path& path, const std::string& sql) {
+    sqlite3* db = nullptr;
+    REQUIRE(sqlite3_open(path.c_str(), &db) == SQLITE_OK);
+    CHECK(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK);
+    sqlite3_close(db);
+}
+
 SampleRecord hand_record(std::int64_t index, double reach, const std::vector<double>& peak_forces) {
     SampleRecord record;
     record.inputs.index = index;
@@ -62,14 +71,15 @@ SampleRecord hand_record(std::int64_t index, double reach, const std::vector<dou
     record.inputs.kind = shapes::RockKind::sphere;
     record.inputs.size = 0.3;
     record.inputs.mass = 36.8;
-    record.outcome.stop = engine::StopReason::at_rest;
-    record.outcome.stop_time = 5.0;
-    record.outcome.reach = reach;
-    record.outcome.max_speed = 8.0;
-    record.outcome.max_bounce_height = 0.25;
-    record.outcome.velocity_change = std::nan("");
+    record.rocks.push_back({risk::rock_inputs(record.inputs), {}, {}});
+    record.rocks.front().outcome.stop = engine::StopReason::at_rest;
+    record.rocks.front().outcome.stop_time = 5.0;
+    record.rocks.front().outcome.reach = reach;
+    record.rocks.front().outcome.max_speed = 8.0;
+    record.rocks.front().outcome.max_bounce_height = 0.25;
+    record.rocks.front().outcome.velocity_change = std::nan("");
     for (std::size_t i = 0; i < peak_forces.size(); ++i) {
-        engine::WallHit& hit = record.outcome.wall_hits.emplace_back();
+        engine::WallHit& hit = record.rocks.front().outcome.wall_hits.emplace_back();
         hit.start_time = 2.0 + static_cast<double>(i);
         hit.end_time = hit.start_time + 0.01;
         hit.peak_normal_force = peak_forces[i];
@@ -99,6 +109,25 @@ void check_same(const SampleRecord& expected, const SampleRecord& actual) {
     CHECK(same_value(a.spin, b.spin));
     check_vec(a.orientation_deg, b.orientation_deg);
 
+    REQUIRE(expected.rocks.size() == actual.rocks.size());
+    for (std::size_t rock = 0; rock < expected.rocks.size(); ++rock) {
+        INFO("rock " << rock);
+        check_same_rock(expected.rocks[rock], actual.rocks[rock]);
+    }
+}
+
+void check_same_rock(const risk::RockResult& expected, const risk::RockResult& actual) {
+    const risk::RockInputs& p = expected.inputs;
+    const risk::RockInputs& q = actual.inputs;
+    CHECK(p.cluster == q.cluster);
+    CHECK(p.kind == q.kind);
+    CHECK(p.shape == q.shape);
+    CHECK(same_value(p.size, q.size));
+    CHECK(same_value(p.density, q.density));
+    CHECK(same_value(p.mass, q.mass));
+    CHECK(same_value(p.material.friction, q.material.friction));
+    CHECK(same_value(p.material.restitution, q.material.restitution));
+    CHECK(same_value(p.material.rolling_resistance, q.material.rolling_resistance));
     const engine::RockOutcome& x = expected.outcome;
     const engine::RockOutcome& y = actual.outcome;
     CHECK(x.stop == y.stop);

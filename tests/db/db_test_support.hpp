@@ -34,6 +34,9 @@ class ScratchDir {
     std::filesystem::path path_;
 };
 
+/// Runs `sql` on the SQLite file at `path` (created when missing), CHECKing that it succeeds.
+void run_sql(const std::filesystem::path& path, const std::string& sql);
+
 /// The file's bytes.
 std::string read_bytes(const std::filesystem::path& path);
 /// Writes the bytes to the file (replacing it).
@@ -46,6 +49,9 @@ SampleRecord hand_record(std::int64_t index, double reach,
 
 /// CHECKs that every stored field of the two records is equal (NaN equals NaN).
 void check_same(const SampleRecord& expected, const SampleRecord& actual);
+
+/// CHECKs that every stored field of the two rocks is equal (NaN equals NaN).
+void check_same_rock(const risk::RockResult& expected, const risk::RockResult& actual);
 
 /// Creates a database at `path` with the synthetic run record and writes `records`.
 ResultsDb make_database(const std::filesystem::path& path, const std::vector<SampleRecord>& records,

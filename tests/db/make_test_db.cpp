@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
             for (std::int64_t i = 0; i < samples; ++i) {
                 batch.push_back(rockfall::db::testing::synthetic_record(options, i));
                 if (uniform_reach) {
-                    batch.back().outcome.reach =
+                    batch.back().rocks.at(0).outcome.reach =
                         10.0 * static_cast<double>(i) / static_cast<double>(samples);
                 }
                 if (batch.size() == 1000 || i + 1 == samples) {

@@ -15,6 +15,7 @@
 
 using namespace rockfall::db;
 using rockfall::db::test::read_bytes;
+using rockfall::db::test::run_sql;
 using rockfall::db::test::ScratchDir;
 using rockfall::db::test::write_bytes;
 namespace fs = std::filesystem;
@@ -39,13 +40,6 @@ void check_refused(const fs::path& path, const std::string& problem, bool writab
         }
     }
     CHECK(read_bytes(path) == before);
-}
-
-void run_sql(const fs::path& path, const std::string& sql) {
-    sqlite3* db = nullptr;
-    REQUIRE(sqlite3_open(path.c_str(), &db) == SQLITE_OK);
-    CHECK(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK);
-    sqlite3_close(db);
 }
 
 std::vector<SampleRecord> some_records(std::int64_t count) {

@@ -30,12 +30,13 @@ SampleRecord known_record(int i) {
                    rockfall::shapes::RockKind::planar}[static_cast<std::size_t>(i % 3)];
     r.inputs.zone = static_cast<std::size_t>(i % 2);
     r.inputs.size = 0.1005 + 0.0004 * i;
-    r.outcome.stop = i % 100 == 0 ? rockfall::engine::StopReason::left_domain
-                                  : rockfall::engine::StopReason::at_rest;
+    r.rocks.at(0).inputs = rockfall::risk::rock_inputs(r.inputs);
+    r.rocks.at(0).outcome.stop = i % 100 == 0 ? rockfall::engine::StopReason::left_domain
+                                              : rockfall::engine::StopReason::at_rest;
     for (const double distance : {0.0, 5.0}) {
-        rockfall::engine::StationCrossing& s = r.outcome.stations.emplace_back();
+        rockfall::engine::StationCrossing& s = r.rocks.at(0).outcome.stations.emplace_back();
         s.distance_from_toe = distance;
-        s.reached = r.outcome.reach >= distance;
+        s.reached = r.rocks.at(0).outcome.reach >= distance;
     }
     return r;
 }

@@ -81,17 +81,17 @@ TEST_CASE("a batch round-trips through the database", "[db]") {
 TEST_CASE("NaN is stored as NULL and read back as NaN", "[db]") {
     ScratchDir dir;
     SampleRecord record = rockfall::db::test::hand_record(0, std::nan(""), {5.0e4});
-    record.outcome.wall_hits[0].peak_normal_force = std::nan("");
+    record.rocks.at(0).outcome.wall_hits[0].peak_normal_force = std::nan("");
     ResultsDb db = rockfall::db::test::make_database(dir / "nan.db", {record});
     CHECK(count_rows(db, "SELECT COUNT(*) FROM outcomes WHERE reach_m IS NULL") == 1);
     CHECK(count_rows(db, "SELECT COUNT(*) FROM outcomes WHERE velocity_change IS NULL") == 1);
     CHECK(count_rows(db, "SELECT COUNT(*) FROM wall_impacts WHERE peak_force_N IS NULL") == 1);
     const auto read = db.sample(0);
     REQUIRE(read.has_value());
-    CHECK(std::isnan(read->outcome.reach));
-    CHECK(std::isnan(read->outcome.velocity_change));
-    CHECK(std::isnan(read->outcome.wall_hits.at(0).peak_normal_force));
-    CHECK(read->outcome.wall_hits.at(0).energy_before == 500.0);
+    CHECK(std::isnan(read->rocks.at(0).outcome.reach));
+    CHECK(std::isnan(read->rocks.at(0).outcome.velocity_change));
+    CHECK(std::isnan(read->rocks.at(0).outcome.wall_hits.at(0).peak_normal_force));
+    CHECK(read->rocks.at(0).outcome.wall_hits.at(0).energy_before == 500.0);
 }
 
 TEST_CASE("a failing batch leaves nothing of itself", "[db]") {
@@ -143,7 +143,8 @@ TEST_CASE("delete_samples_from removes those samples and all their rows", "[db]"
     db.delete_samples_from(20);
     CHECK(db.stored_samples().size() == 20);
     CHECK(db.stored_samples().back() == 19);
-    for (const char* table : {"samples", "outcomes", "stations", "wall_impacts", "trajectories"}) {
+    for (const char* table :
+         {"samples", "rocks", "outcomes", "stations", "wall_impacts", "trajectories"}) {
         INFO(table);
         CHECK(count_rows(
                   db, std::string("SELECT COUNT(*) FROM ") + table + " WHERE sample >= 20") == 0);

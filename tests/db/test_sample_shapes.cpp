@@ -25,6 +25,7 @@ SampleRecord custom_record(std::int64_t index, double reach, const std::string& 
     record.inputs.kind = RockKind::custom;
     record.inputs.shape = shape;
     record.inputs.sphericity = sphericity;
+    record.rocks.at(0).inputs = rockfall::risk::rock_inputs(record.inputs);
     return record;
 }
 

@@ -18,9 +18,10 @@ TEST_CASE("wall impacts come back one per hit with their sample", "[db][impacts]
     // Sample 0: two hits; sample 1: none; sample 2: one hit, a massive rock of 80 kg.
     std::vector<SampleRecord> records = {hand_record(0, 5.0, {1.0e4, 2.0e4}), hand_record(1, 3.0),
                                          hand_record(2, 5.0, {5.0e4})};
-    records[0].outcome.wall_hits[1].normal_speed = 1.5;
+    records[0].rocks.at(0).outcome.wall_hits[1].normal_speed = 1.5;
     records[2].inputs.kind = rockfall::shapes::RockKind::massive;
     records[2].inputs.mass = 80.0;
+    records[2].rocks.at(0).inputs = rockfall::risk::rock_inputs(records[2].inputs);
     const ResultsDb db = make_database(dir / "impacts.db", records);
 
     const std::vector<WallImpact> impacts = read_wall_impacts(db);

@@ -38,7 +38,8 @@ const WallHit& first_hit(const Outcome& outcome) {
 
 TEST_CASE("a sub-stepped wall hit matches the whole world at the fine step",
           "[verification][wall][substep]") {
-    for (const auto kind : {rockfall::shapes::RockKind::sphere, rockfall::shapes::RockKind::massive}) {
+    for (const auto kind :
+         {rockfall::shapes::RockKind::sphere, rockfall::shapes::RockKind::massive}) {
         Scenario per_rock = hit_scenario(WallStepping::per_rock);
         Scenario world = hit_scenario(WallStepping::world);
         per_rock.rocks[0].rock.kind = kind;
@@ -57,23 +58,23 @@ TEST_CASE("a sub-stepped wall hit matches the whole world at the fine step",
         CHECK_THAT(hit.velocity_after.x(), WithinRel(reference.velocity_after.x(), 0.01));
         CHECK(hit.history.size() >= 50);
         // The world never left the coarse step: every step of the run was a coarse one.
-        CHECK_THAT(a.coarse_steps * per_rock.numerics.time_step,
-                   WithinAbs(a.simulated_time, 1e-9));
+        CHECK_THAT(a.coarse_steps * per_rock.numerics.time_step, WithinAbs(a.simulated_time, 1e-9));
         CHECK(b.fine_steps > 50);
         // The pose correction puts the rock where the fine-stepped world has it: apart from
         // the drift of their (slightly different) rebound velocities since the hit, within 1 mm.
-        const double drift = (a.rocks[0].final_state.velocity - b.rocks[0].final_state.velocity)
-                                 .norm() *
-                             (a.simulated_time - hit.end_time);
+        const double drift =
+            (a.rocks[0].final_state.velocity - b.rocks[0].final_state.velocity).norm() *
+            (a.simulated_time - hit.end_time);
         CAPTURE(drift);
         CHECK((a.rocks[0].final_state.position - b.rocks[0].final_state.position).norm() <
               drift + 1e-3);
     }
 }
 
-TEST_CASE("a sub-stepped wall hit's impulse is the rock's momentum change and does not depend "
-          "on the coarse step",
-          "[verification][wall][substep]") {
+TEST_CASE(
+    "a sub-stepped wall hit's impulse is the rock's momentum change and does not depend "
+    "on the coarse step",
+    "[verification][wall][substep]") {
     Scenario scenario = hit_scenario(WallStepping::per_rock);
     const double mass = kDensity * std::numbers::pi / 6.0 * std::pow(kSize, 3);
     std::vector<double> peaks;

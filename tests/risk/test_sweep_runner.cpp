@@ -65,14 +65,15 @@ TEST_CASE("sweep results do not depend on the thread count or the order samples 
         CHECK(a.inputs.seed == b.inputs.seed);
         CHECK(a.inputs.size == b.inputs.size);
         // Bitwise equal outcomes: the same sample gives the same trajectory on any thread.
-        CHECK(a.outcome.reach == b.outcome.reach);
-        CHECK(a.outcome.stop_time == b.outcome.stop_time);
-        CHECK(a.outcome.final_state.position == b.outcome.final_state.position);
-        CHECK(a.outcome.wall_hits.size() == b.outcome.wall_hits.size());
+        CHECK(a.rocks.at(0).outcome.reach == b.rocks.at(0).outcome.reach);
+        CHECK(a.rocks.at(0).outcome.stop_time == b.rocks.at(0).outcome.stop_time);
+        CHECK(a.rocks.at(0).outcome.final_state.position ==
+              b.rocks.at(0).outcome.final_state.position);
+        CHECK(a.rocks.at(0).outcome.wall_hits.size() == b.rocks.at(0).outcome.wall_hits.size());
     }
     // A sample run alone equals the same sample in the sweep.
     const risk::SampleResult alone = risk::run_sample(spec, base, 5);
-    CHECK(alone.outcome.reach == one.at(5).outcome.reach);
+    CHECK(alone.rocks.at(0).outcome.reach == one.at(5).rocks.at(0).outcome.reach);
 }
 
 TEST_CASE("a worker's exception reaches the caller", "[risk][sweep]") {

@@ -88,8 +88,7 @@ wall_stepping = "world"
     CHECK(plain.orientation_deg == rockfall::engine::Vec3(0.0, 10.0, 90.0));
     CHECK(s.numerics.wall_stepping == rockfall::engine::WallStepping::world);
 
-    const rockfall::engine::Scenario back =
-        parse(rockfall::scenario::format_scenario(s));
+    const rockfall::engine::Scenario back = parse(rockfall::scenario::format_scenario(s));
     REQUIRE(back.cluster->marked.size() == 2);
     CHECK(back.cluster->marked[0].name == "red");
     // The hull comes back as its vertices (re-hulled: the same rock, in another order).

@@ -17,14 +17,16 @@
 
 namespace rockfall::db {
 
-/// A per-sample quantity the queries read.
+/// A quantity the queries read, per rock (Per::rock) or per sample (Per::sample: over all of
+/// the sample's rocks).
 enum class Quantity {
-    reach,          ///< furthest horizontal distance past the toe, m; every sample
-    max_speed,      ///< highest speed, m/s; every sample
-    bounce_height,  ///< highest gap between the rock and the surface, m; every sample
+    reach,          ///< furthest horizontal distance past the toe, m; per sample the largest
+    max_speed,      ///< highest speed, m/s; per sample the largest
+    bounce_height,  ///< highest gap between a rock and the surface, m; per sample the largest
     impact_energy,  ///< kinetic energy at first touch of the wall, J; largest over the hits
     impact_speed,   ///< speed at first touch of the wall, m/s; largest over the hits
-    impulse,        ///< normal impulse on the wall, N s; largest over the hits
+    impulse,        ///< normal impulse on the wall, N s; per rock the largest over its hits,
+                    ///< per sample the sum over all hits of all its rocks (total impulse)
     peak_force,     ///< peak normal force on the wall, N; largest over the hits
 };
 
@@ -41,8 +43,18 @@ Quantity parse_quantity(std::string_view name);
 std::string_view column_of(Quantity quantity);
 /// Unit ("m", "m/s", "J", "N s", "N").
 std::string_view unit_of(Quantity quantity);
-/// True for the wall quantities: only samples that hit the wall have them, and a sample's
+/// True for the wall quantities: only rocks (samples) that hit the wall have them, and a rock's
 /// value is the largest over its hits (view sample_impacts).
+
+/// What one observation is: a rock of a sample, or a whole sample (a cluster release).
+enum class Per {
+    rock,    ///< every rock of every sample (a one-rock sample: the sample)
+    sample,  ///< every sample, its value made of all its rocks (see Quantity)
+};
+/// Name on the command line ("rock", "sample").
+std::string_view to_string(Per per);
+/// The observation of a name; throws std::invalid_argument naming the choices.
+Per parse_per(std::string_view name);
 bool needs_wall_hit(Quantity quantity);
 
 /// What results are broken down by.
@@ -58,14 +70,18 @@ std::string_view to_string(GroupBy by);
 /// The grouping of a name; throws std::invalid_argument listing the names.
 GroupBy parse_group_by(std::string_view name);
 
-/// A breakdown: by what and, for size classes, where the classes change.
+/// A breakdown: by what and, for size classes, where the classes change; and what one
+/// observation is.
 struct Grouping {
-    /// What to group by.
+    /// What to group by. Per rock, kind, shape and size are the rock's (table rocks); per
+    /// sample the sample's (table samples; a cluster release has no size).
     GroupBy by = GroupBy::none;
     /// Size class edges, m, strictly ascending and > 0: classes [0, e1), [e1, e2), ...,
     /// [en, inf). Empty with by = size: edges at the quartiles of the stored sizes, rounded
     /// to two significant digits.
     std::vector<double> size_edges;
+    /// Observations: rocks (default) or samples.
+    Per per = Per::rock;
 };
 
 /// Throws std::invalid_argument naming the edge unless the edges are finite, > 0 and
@@ -85,10 +101,10 @@ struct GroupId {
 struct Group {
     /// The group.
     GroupId id;
-    /// Samples in the group.
+    /// Observations (rocks or samples, Grouping::per) in the group.
     std::int64_t samples = 0;
-    /// The values, ascending: one per sample that has one (for the wall quantities the
-    /// samples that hit the wall; NULLs are skipped).
+    /// The values, ascending: one per observation that has one (for the wall quantities those
+    /// that hit the wall; NULLs are skipped).
     std::vector<double> values;
 };
 
@@ -212,8 +228,10 @@ ExceedanceCurve exceedance_curve(const ResultsDb& db, Quantity quantity, int poi
 
 /// A sample among the worst by some quantity, with what identifies and replays it.
 struct WorstSample {
-    /// Sample index (for `rockfall simulate --from DB --sample i`) and engine seed.
+    /// Sample index (for `rockfall simulate --from DB --sample i`), rock index (0-based; -1
+    /// for a whole sample) and the sample's engine seed.
     std::int64_t sample = 0;
+    std::int64_t rock = 0;
     std::uint64_t seed = 0;
     /// Shape kind, nominal size (m), mass (kg) and release zone name.
     std::string kind;
@@ -233,15 +251,21 @@ struct WorstSample {
     double impact_speed = 0.0;
 };
 
-/// The `count` samples with the largest `by`, largest first (ties by sample index); samples
+/// Per rock: the `count` rocks with the largest `by` (each rock of each sample), largest first
+/// (ties by sample and rock index), each with its own inputs and outcome. Per sample: the
+/// `count` samples with the largest value made of all their rocks (see Quantity), rock = -1,
+/// the sample's kind, size and (total) mass, its largest reach, speed and bounce height, its
+/// wall hits summed, and its wall quantities as in Quantity (impulse: the total). Those
 /// without a value (NULL, no wall hit) are never among them. count >= 1.
-std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::int64_t count);
+std::vector<WorstSample> worst_samples(const ResultsDb& db, Quantity by, std::int64_t count,
+                                       Per per = Per::rock);
 
 /// What a stop rule needs of a stored sample's outcome.
 struct StoredOutcome {
     /// Sample index.
     std::int64_t sample = 0;
-    /// Reach past the toe, m (NaN when not stored), and the number of wall hits.
+    /// Largest reach past the toe over its rocks, m (NaN when not stored), and the number of
+    /// wall hits of all its rocks.
     double reach = 0.0;
     std::int64_t wall_hits = 0;
 };
@@ -270,23 +294,27 @@ struct StationShare {
 
 /// What `rockfall query DB summary` reports.
 struct Summary {
-    /// The run record and the samples stored.
+    /// The run record, the samples stored and their rocks (equal for one-rock samples).
     RunRecord run;
     std::int64_t samples = 0;
+    std::int64_t rocks = 0;
     /// Confidence of every interval below.
     double confidence = 0.95;
-    /// Samples per stop reason, most frequent first.
+    /// Rocks per stop reason, most frequent first.
     std::vector<std::pair<std::string, std::int64_t>> stop_reasons;
-    /// Reach median with its interval, and the largest reach (m; NaN without samples).
+    /// Reach median over the rocks with its interval, and the largest reach (m; NaN without
+    /// samples).
     PercentileTable reach;
     double max_reach = std::numeric_limits<double>::quiet_NaN();
-    /// Samples that hit the wall, and the number of hits over all samples.
+    /// Rocks that hit the wall (of all rocks), samples with a rock that did (of all samples),
+    /// and the number of hits over all rocks.
     Share wall;
+    Share wall_samples;
     std::int64_t wall_impacts = 0;
-    /// Samples past each station.
+    /// Rocks past each station.
     std::vector<StationShare> stations;
-    /// Percentiles 50, 90, 95, 99 of the peak force and impact energy over the samples that
-    /// hit the wall.
+    /// Percentiles 50, 90, 95, 99 of the peak force and impact energy over the rocks that hit
+    /// the wall (each rock's largest).
     PercentileTable peak_force;
     PercentileTable impact_energy;
 };

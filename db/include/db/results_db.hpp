@@ -31,8 +31,9 @@ namespace rockfall::db {
 
 /// SQLite application_id of a rockfall results database ("RKFL").
 inline constexpr std::int32_t application_id = 0x524b464c;
-/// Schema version written by this build; files with a newer version are refused.
-inline constexpr int schema_version = 1;
+/// Schema version written by this build; files with a newer version are refused. Version 1
+/// (one rock per sample) is read as version 2 with every row's rock = 0, but not written to.
+inline constexpr int schema_version = 2;
 
 /// A database problem; what() names the file and says what is wrong and what to do.
 class DatabaseError : public std::runtime_error {
@@ -88,13 +89,9 @@ struct RunRecord {
     std::vector<std::string> zones;
 };
 
-/// One finished sample: its inputs, its outcome and optionally a decimated trajectory.
-struct SampleRecord {
-    risk::SampleInputs inputs;
-    engine::RockOutcome outcome;
-    /// Trajectory samples, empty unless the sweep records trajectories.
-    std::vector<engine::RockState> trajectory;
-};
+/// One finished sample: its inputs and each rock's inputs, outcome and trajectory
+/// (risk::SampleResult).
+using SampleRecord = risk::SampleResult;
 
 /// True when the file starts with the SQLite 3 header ("SQLite format 3" and a zero byte): a
 /// cheap test of which kind of input a command was given, before opening it.

@@ -1,7 +1,8 @@
 #pragma once
 /// Every wall impact of a sweep, one row per hit with what identifies and replays its sample:
 /// the input of the design-formula comparisons (`rockfall fit DB`, `rockfall envelope DB`).
-/// Reads the view impact_results (schema v1).
+/// Reads the view impact_results: every hit of every rock, each with its own rock's kind, size
+/// and mass.
 
 #include "db/results_db.hpp"
 
@@ -13,8 +14,10 @@ namespace rockfall::db {
 
 /// One wall hit.
 struct WallImpact {
-    /// Sample index, hit number within the sample (1-based) and the sample's engine seed.
+    /// Sample index, rock index (0-based), hit number within the rock (1-based) and the
+    /// sample's engine seed.
     std::int64_t sample = 0;
+    std::int64_t rock = 0;
     std::int64_t hit = 0;
     std::uint64_t seed = 0;
     /// Shape kind name as stored ("sphere", "massive", "planar", ...).
@@ -30,7 +33,7 @@ struct WallImpact {
     double energy_before = 0.0;
 };
 
-/// All wall hits, ordered by sample and hit. NULL values read as NaN. Throws DatabaseError
+/// All wall hits, ordered by sample, rock and hit. NULL values read as NaN. Throws DatabaseError
 /// for a damaged file.
 std::vector<WallImpact> read_wall_impacts(const ResultsDb& db);
 

@@ -39,6 +39,15 @@ struct RunOptions {
     double trajectory_interval = 0.01;
 };
 
+/// The rock of outcome entry `index` (of `count` rocks in the outcome) as simulated, drawn at
+/// nominal size `size` (m, RockOutcome::size): the scenario's [[rocks]] entry, a marked cluster
+/// rock (the last ones), or a drawn cluster rock (the cluster's spec at that size). A drawn rock
+/// of a target sphericity has a hull of its own; its spec here is kind custom named
+/// "sphericity S" with the cluster family's hull as a stand-in (same volume, so the same mass,
+/// not the same shape).
+RockSpec simulated_rock(const Scenario& scenario, std::size_t index, std::size_t count,
+                        double size);
+
 /// Simulates all rocks of a scenario until each one stops. The same scenario, seed and binary
 /// give bit-identical outcomes. The scenario must be valid (see app::load_scenario).
 Outcome simulate(const Scenario& scenario, std::uint64_t seed, const RunOptions& options = {});

@@ -12,24 +12,29 @@
 
 namespace rockfall::report {
 
-/// `percentiles`: one row per group and level; `by` names the group column.
+/// `percentiles`: one row per group and level; `by` names the group column, `per` what an
+/// observation is (the column counting them is named "rocks" or "samples").
 void write_percentiles(std::ostream& out, QueryFormat format, const std::string& database,
-                       const db::PercentileTable& table, db::GroupBy by);
+                       const db::PercentileTable& table, db::GroupBy by,
+                       db::Per per = db::Per::rock);
 
 /// `exceed`: one row per group.
 void write_exceedance(std::ostream& out, QueryFormat format, const std::string& database,
-                      const db::ExceedanceTable& table, db::GroupBy by);
+                      const db::ExceedanceTable& table, db::GroupBy by,
+                      db::Per per = db::Per::rock);
 
 /// `curve`: one row per group and threshold.
 void write_curve(std::ostream& out, QueryFormat format, const std::string& database,
-                 const db::ExceedanceCurve& curve, db::GroupBy by);
+                 const db::ExceedanceCurve& curve, db::GroupBy by, db::Per per = db::Per::rock);
 
-/// Which samples an exceedance probability is over, in words.
-std::string exceedance_trials(db::Quantity quantity);
+/// Which rocks or samples an exceedance probability is over, in words.
+std::string exceedance_trials(db::Quantity quantity, db::Per per = db::Per::rock);
 
-/// `worst`: one row per sample, worst first, ranked by `by`.
+/// `worst`: one row per rock (sample and rock index) or, per sample, per sample (no rock
+/// index), worst first, ranked by `by`.
 void write_worst(std::ostream& out, QueryFormat format, const std::string& database,
-                 db::Quantity by, const std::vector<db::WorstSample>& worst);
+                 db::Quantity by, const std::vector<db::WorstSample>& worst,
+                 db::Per per = db::Per::rock);
 
 /// `summary`: the run, stop reasons, reach, wall and station shares, wall load percentiles.
 void write_summary(std::ostream& out, QueryFormat format, const std::string& database,
@@ -38,7 +43,7 @@ void write_summary(std::ostream& out, QueryFormat format, const std::string& dat
 /// The quantity's output column name with its unit ("reach_m", "impact_energy_J").
 std::string quantity_column(db::Quantity quantity);
 
-/// Which samples a quantity is taken over, in words, for text and JSON.
-std::string population_of(db::Quantity quantity);
+/// Which rocks or samples a quantity is taken over, in words, for text and JSON.
+std::string population_of(db::Quantity quantity, db::Per per = db::Per::rock);
 
 }  // namespace rockfall::report

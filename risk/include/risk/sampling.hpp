@@ -2,6 +2,7 @@
 /// Sweep specifications and samples: what a Monte Carlo or Latin hypercube sweep varies, and
 /// sample i's inputs as a pure function of (run seed, i), independent of threads and order.
 
+#include "engine/outcome.hpp"
 #include "engine/scenario.hpp"
 #include "risk/distribution.hpp"
 #include "shapes/rocks.hpp"
@@ -33,8 +34,8 @@ struct ReleaseZone {
 };
 
 /// The most samples one sweep plans: 10^8. A sweep keeps a list of the samples to run (8 bytes
-/// each, 0.8 GB here) and its database grows by about 0.5 kB a sample (50 GB here); 10^8
-/// samples take about 23 days on one core at 50 samples/s.
+/// each, 0.8 GB here) and its database grows by about 0.6 kB a rock (60 GB here for one rock a
+/// sample); 10^8 samples take about 23 days on one core at 50 samples/s.
 inline constexpr std::int64_t max_samples = 100'000'000;
 
 /// What a sweep varies. Every input that a scenario file's [sweep] table leaves out is fixed
@@ -113,7 +114,9 @@ std::string to_string(SweepSpec::Method method);
 /// The spec that varies nothing: every input fixed at base.rocks[0]'s value, one zone
 /// "release" at its release point, kinds = {its kind}, random_orientation = its
 /// random_orientation, speed = its velocity along the surface tangent there, spin = its spin's
-/// y component. Throws std::invalid_argument when base has no rock.
+/// y component. For a cluster scenario (base.cluster set) the default SweepSpec: its samples
+/// are whole cluster releases and only method, samples and seed apply. Throws
+/// std::invalid_argument when base has neither a rock nor a cluster.
 SweepSpec sweep_defaults(const engine::Scenario& base);
 
 /// A shape that a spec may draw, for checks that depend on the shape.
@@ -155,7 +158,8 @@ struct SweepProblem {
 /// surface tangent or spin off the across-slope axis (a sweep sets both from speed and spin).
 /// Not checked here: the scenario's own ranges of size, density, material and release
 /// distance, which app::validate_sweep applies to the supports with the scenario file's rules,
-/// where they are defined.
+/// where they are defined. For a cluster scenario only samples is checked (the rest does not
+/// apply; scenario files refuse the keys).
 std::vector<SweepProblem> find_problems(const SweepSpec& spec, const engine::Scenario& base);
 
 /// Throws std::invalid_argument listing find_problems(spec, base), one per line as
@@ -229,6 +233,10 @@ std::array<double, sample_dimensions> unit_point(const SweepSpec& spec, std::int
 /// is replaced by the next of a SplitMix64 chain; none of 5000 seeds needed it). The engine
 /// seed is a hash of (spec.seed, index) on another stream. Without random_orientation the
 /// orientation is base.rocks[0]'s orientation_deg.
+/// For a cluster scenario (base.cluster set) the sample is one whole release of base, drawn by
+/// the engine from the seed alone: only index and seed are drawn (the same engine seed as a
+/// rock sample's), zone 0; kind, density and material are the cluster's; size, mass, release
+/// point, speed, spin, orientation and sphericity are NaN (each rock's are in RockInputs).
 SampleInputs draw_sample(const SweepSpec& spec, const engine::Scenario& base, std::int64_t index);
 
 /// The custom hull of a sample as draw_sample made it, from what a results database stores
@@ -239,14 +247,61 @@ std::shared_ptr<const shapes::CustomShape> sample_shape(const SweepSpec& spec,
                                                         const engine::Scenario& base,
                                                         const SampleInputs& inputs);
 
-/// The one-rock scenario that sample runs: base with rocks = {base.rocks[0] with the inputs}:
-/// kind, size, density, material, release distance and lateral; velocity = speed times the
-/// downslope surface tangent at the release point; spin = spin about +y (across the slope),
-/// which rolls a rock downslope when positive (omega y x r n = r omega t); orientation_deg
-/// from the inputs with random_orientation false, so the scenario alone fixes the rock. A
-/// custom rock takes inputs.custom_shape, or base.rocks[0]'s shape when that is null and
+/// The one-rock scenario that sample runs (for a cluster scenario: base itself): base with rocks =
+/// {base.rocks[0] with the inputs}: kind, size, density, material, release distance and lateral;
+/// velocity = speed times the downslope surface tangent at the release point; spin = spin about +y
+/// (across the slope), which rolls a rock downslope when positive (omega y x r n = r omega t);
+/// orientation_deg from the inputs with random_orientation false, so the scenario alone fixes the
+/// rock. A custom rock takes inputs.custom_shape, or base.rocks[0]'s shape when that is null and
 /// inputs.shape is "" (inputs read back from a database: use the overload with the spec).
 engine::Scenario sample_scenario(const engine::Scenario& base, const SampleInputs& inputs);
+
+/// One rock of a sample as simulated: the inputs the results database keeps per rock.
+struct RockInputs {
+    /// Where the rock comes from: true for a rock of the scenario's [cluster], false for one of
+    /// its [[rocks]] (the swept rock of a one-rock sample).
+    bool cluster = false;
+    /// Shape family, and which custom shape as SampleInputs::shape ("" for the families and
+    /// for a [[rocks]] entry's own shape).
+    shapes::RockKind kind = shapes::RockKind::sphere;
+    std::string shape;
+    /// Nominal size (volume-equivalent diameter, m), density (kg/m3), mass (kg).
+    double size = 0.0;
+    double density = 0.0;
+    double mass = 0.0;
+    /// Contact coefficients.
+    engine::Material material;
+};
+
+/// The inputs of a one-rock sample's rock, as the sample's.
+RockInputs rock_inputs(const SampleInputs& inputs);
+
+/// Every rock of `scenario` (sample_scenario's) in engine order ([[rocks]], then the cluster),
+/// given the outcome of its run (the cluster rocks' drawn sizes): a one-rock sample's rock is
+/// rock_inputs(inputs); a [[rocks]] entry or a cluster rock has its spec's kind, density and
+/// material, its size and the mass density * pi / 6 * size^3 (the size is the
+/// volume-equivalent diameter).
+std::vector<RockInputs> rock_inputs(const engine::Scenario& scenario, const SampleInputs& inputs,
+                                    const std::vector<engine::RockOutcome>& outcomes);
+
+/// One rock of a finished sample.
+struct RockResult {
+    /// Its inputs (rock_inputs).
+    RockInputs inputs;
+    /// Its outcome.
+    engine::RockOutcome outcome;
+    /// Trajectory samples, empty unless RunnerOptions::trajectory_interval > 0.
+    std::vector<engine::RockState> trajectory;
+};
+
+/// One finished sample.
+struct SampleResult {
+    /// Its inputs (draw_sample); for a cluster release, mass is the sum of its rocks' masses.
+    SampleInputs inputs;
+    /// Its rocks in engine::Outcome::rocks order (index = rock index): one for a rock sample,
+    /// the scenario's [[rocks]] then the cluster's for a cluster release.
+    std::vector<RockResult> rocks;
+};
 
 /// sample_scenario with the custom hull rebuilt by sample_shape when inputs.custom_shape is
 /// null (a sample read back from a results database).

@@ -18,16 +18,6 @@
 
 namespace rockfall::risk {
 
-/// One finished sample.
-struct SampleResult {
-    /// Its inputs (draw_sample).
-    SampleInputs inputs;
-    /// The outcome of its one rock.
-    engine::RockOutcome outcome;
-    /// Trajectory samples, empty unless RunnerOptions::trajectory_interval > 0.
-    std::vector<engine::RockState> trajectory;
-};
-
 /// Simulates one sample alone: draw_sample, sample_scenario, engine::simulate with the
 /// sample's seed. `trajectory_interval` in s; 0 records no trajectory.
 SampleResult run_sample(const SweepSpec& spec, const engine::Scenario& base, std::int64_t index,
@@ -90,8 +80,8 @@ class SweepRunner {
 struct UntilRule {
     /// The proportion estimated.
     enum class Statistic {
-        wall,    ///< share of rocks that hit the reaction wall
-        exceed,  ///< share of rocks whose reach is >= distance
+        wall,    ///< share of samples with a rock that hit the reaction wall
+        exceed,  ///< share of samples with a rock whose reach is >= distance
     };
     Statistic statistic = Statistic::wall;
     /// For exceed: horizontal distance past the toe, m.
@@ -103,8 +93,10 @@ struct UntilRule {
     /// Samples between checks (>= 1).
     std::int64_t check_every = 100;
 
-    /// Whether one outcome counts as a success of the proportion.
+    /// Whether one rock's outcome counts as a success of the proportion.
     bool success(const engine::RockOutcome& outcome) const;
+    /// Whether a sample counts as a success: any of its rocks does.
+    bool success(const std::vector<RockResult>& rocks) const;
     /// Readable form, e.g. "wall probability +-0.01 at 95 %".
     std::string describe() const;
 };
