@@ -2,6 +2,7 @@
 
 #include "report/text_format.hpp"
 
+#include "engine/simulation.hpp"
 #include "shapes/rocks.hpp"
 
 #include <algorithm>

@@ -160,6 +160,7 @@ TEST_CASE(
     REQUIRE_FALSE(force_rock.empty());
     REQUIRE(rocks_hitting < 2 * rocks_per_sample);
     std::sort(reach_rock.begin(), reach_rock.end());
+    const std::vector<double> reach_by_sample = reach_sample;  // in sample order
     std::sort(reach_sample.begin(), reach_sample.end());
     std::sort(force_rock.begin(), force_rock.end());
     std::sort(impulse_sample.begin(), impulse_sample.end());
@@ -218,8 +219,9 @@ TEST_CASE(
     const std::vector<db::StoredOutcome> stored = db::stored_outcomes(db);
     REQUIRE(stored.size() == 2);
     for (std::size_t i = 0; i < results.size(); ++i) {
-        CHECK(rule.success(results[i].rocks) == (reach_sample[i] >= threshold));
-        CHECK(stored[i].reach == reach_sample[i]);
+        CHECK(rule.success(results[i].rocks) == (reach_by_sample[i] >= threshold));
+        CHECK(stored[i].sample == static_cast<std::int64_t>(i));
+        CHECK(stored[i].reach == reach_by_sample[i]);
     }
 
     // Replay: sample 1 from what the database stores gives every rock's outcome again.

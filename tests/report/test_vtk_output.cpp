@@ -194,10 +194,12 @@ TEST_CASE("the engine gives a cluster's rock geometries, which sit in the box at
     const report::RockFrame first = frames.frames().front();
     REQUIRE(first.time == 0.0);
     const report::VtkSurface surface = report::rocks_surface(geometry.rocks, first);
-    // Every hull vertex inside the box (1 mm slack) and none below the floor: settled in it.
+    // Every hull vertex inside the box and none below the floor: settled in it. 2 mm slack:
+    // the box's floor is the sphere layer's top, and a corner sinks into the hollows between
+    // its spheres (by up to 1.9 mm, docs/clusters.md; 1.4 mm seen with seed 3).
     const shapes::Slope slope(scenario.slope);
     shapes::OrientedBox box = shapes::release_box_region(slope, scenario.cluster->box);
-    box.half_extents += Vec3::Constant(1e-3);
+    box.half_extents += Vec3::Constant(2e-3);
     for (const Vec3& p : surface.points) CHECK(shapes::signed_distance(box, p) <= 0.0);
     // The back wall lies against the box's upslope face, outside it.
     CHECK(shapes::signed_distance(box, geometry.solids.front().center) > 0.0);
