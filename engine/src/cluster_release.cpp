@@ -71,6 +71,18 @@ std::vector<PlacedRock> cluster_rocks(const shapes::Slope& slope, const Cluster&
         }
         spots.back() = shapes::Vec2(marked.along, marked.across);
     }
+    if (cluster.box.packing == shapes::Packing::flat) {
+        // Lying flat as their bounding boxes, in the orientation the packing gives them.
+        std::vector<Vec3> half_extents;
+        for (const PlacedRock& rock : rocks) half_extents.push_back(rock.geometry.half_extents);
+        const std::vector<shapes::RockPose> poses =
+            shapes::pack_release_box_flat(slope, cluster.box, half_extents, generator, spots);
+        for (std::size_t i = 0; i < rocks.size(); ++i) {
+            rocks[i].initial.position = poses[i].center;
+            rocks[i].initial.orientation = Eigen::Quaterniond(poses[i].rotation).normalized();
+        }
+        return rocks;
+    }
     const std::vector<Vec3> centres =
         shapes::pack_release_box(slope, cluster.box, radii, generator, spots);
     for (std::size_t i = 0; i < rocks.size(); ++i) {

@@ -28,8 +28,10 @@ void read_cluster(TableReader& root, engine::Scenario& scenario, bool has_rocks,
         read_fields(r, cluster, cluster_fields);
         with_table(r, "material",
                    [&](TableReader& m) { read_fields(m, cluster.rock.material, material_fields); });
-        with_table(r, "box",
-                   [&](TableReader& b) { read_fields(b, cluster.box, release_box_fields); });
+        with_table(r, "box", [&](TableReader& b) {
+            read_fields(b, cluster.box, release_box_fields);
+            read_enum(b, "packing", packing_names, cluster.box.packing);
+        });
         with_table_array(r, "marked", cluster.marked,
                          [&](TableReader& m, engine::MarkedRock& marked) {
                              // Defaults: a rock of the cluster's family at its d50.
@@ -88,6 +90,10 @@ void check_cluster(Checker& c, const engine::Scenario& s, bool profile_ok) {
             c.fail(path + ".name", "(none)", "a marked rock needs a name (it is reported by it)");
         }
         const bool geometry_ok = check_rock_spec(c, s, marked.rock, path);
+        if (marked.orientation_deg && cluster.box.packing == shapes::Packing::flat) {
+            c.fail(path + ".orientation_deg", format_vector(*marked.orientation_deg) + " deg",
+                   "not with cluster.box.packing = \"flat\" (the packing lays every rock flat)");
+        }
         if (!c.check_fields(marked, path, marked_rock_fields) || !geometry_ok || !box_ok) {
             continue;
         }

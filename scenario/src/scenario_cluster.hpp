@@ -45,6 +45,11 @@ inline const Fields<engine::MarkedRock, 2> marked_rock_fields{{
     {"across", &engine::MarkedRock::across, "m", any_finite()},
 }};
 
+inline constexpr std::array<EnumName<shapes::Packing>, 2> packing_names{{
+    {"spheres", shapes::Packing::spheres},
+    {"flat", shapes::Packing::flat},
+}};
+
 // The families a cluster's rocks may take (a custom hull has no size to draw).
 inline constexpr std::array<shapes::RockKind, 3> cluster_kinds = {
     shapes::RockKind::sphere, shapes::RockKind::massive, shapes::RockKind::planar};

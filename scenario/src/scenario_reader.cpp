@@ -186,15 +186,6 @@ void read_material(TableReader& parent, std::string_view key, engine::Material& 
     with_table(parent, key, [&](TableReader& r) { read_fields(r, material, material_fields); });
 }
 
-// A string key naming one of `choices`; `value` keeps its default when the key is absent.
-template <typename E, std::size_t N>
-void read_enum(TableReader& r, std::string_view key, const std::array<EnumName<E>, N>& choices,
-               E& value) {
-    std::array<std::string_view, N> names;
-    for (std::size_t i = 0; i < N; ++i) names[i] = choices[i].name;
-    if (const auto index = read_choice(r, key, names)) value = choices[*index].value;
-}
-
 void read_wall_contact(TableReader& r, engine::WallContact& contact) {
     read_enum(r, "model", wall_model_names, contact.model);
     read_fields(r, contact, wall_contact_fields);

@@ -137,6 +137,16 @@ std::optional<std::size_t> read_choice(TableReader& reader, std::string_view key
     return std::nullopt;
 }
 
+// A string key naming one of `choices` (entries with .name and .value, as EnumName); `value`
+// keeps its default when the key is absent.
+template <typename Choice, std::size_t N, typename E>
+void read_enum(TableReader& r, std::string_view key, const std::array<Choice, N>& choices,
+               E& value) {
+    std::array<std::string_view, N> names;
+    for (std::size_t i = 0; i < N; ++i) names[i] = choices[i].name;
+    if (const auto index = read_choice(r, key, names)) value = choices[*index].value;
+}
+
 // An array whose elements are all accepted by `element` (which reports the ones it rejects);
 // replaces `out` only when every element is accepted.
 template <class T, class Element>

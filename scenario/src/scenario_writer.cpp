@@ -175,6 +175,7 @@ std::string format_scenario(const engine::Scenario& s) {
         w.fields(cluster.rock.material, detail::material_fields);
         w.header("cluster.box");
         w.fields(cluster.box, detail::release_box_fields);
+        w.line("packing", toml_string(detail::name_of(detail::packing_names, cluster.box.packing)));
         for (const engine::MarkedRock& marked : cluster.marked) {
             w.array_header("cluster.marked");
             w.line("name", toml_string(marked.name));

@@ -58,6 +58,25 @@ std::vector<std::size_t> drop_order(const std::vector<double>& size, PackingOrde
     return indices;
 }
 
+// The drop order with the rocks that have a spot (spots empty, or one per rock) moved to the
+// end, in index order. Throws std::invalid_argument when spots has the wrong size.
+std::vector<std::size_t> spots_last(const std::vector<std::size_t>& order,
+                                    const std::vector<std::optional<Vec2>>& spots) {
+    if (spots.empty()) return order;
+    if (spots.size() != order.size()) {
+        throw std::invalid_argument("release box packing: " + std::to_string(spots.size()) +
+                                    " spots for " + std::to_string(order.size()) + " rocks");
+    }
+    std::vector<std::size_t> result;
+    for (const std::size_t index : order) {
+        if (!spots[index]) result.push_back(index);
+    }
+    for (std::size_t index = 0; index < spots.size(); ++index) {
+        if (spots[index]) result.push_back(index);
+    }
+    return result;
+}
+
 // The PackingError of a box that holds `placed` of the rocks, whose packing shapes (bounding
 // spheres or boxes) have `volumes`; `placed_volume` of them lie below height `top`.
 [[noreturn]] void throw_full(const ReleaseBox& box, std::size_t placed,
@@ -195,10 +214,6 @@ std::vector<Vec3> pack_release_box(const Slope& slope, const ReleaseBox& box,
                                    const std::vector<double>& radii, std::mt19937_64& generator,
                                    const std::vector<std::optional<Vec2>>& spots) {
     check_box(slope, box);
-    if (!spots.empty() && spots.size() != radii.size()) {
-        throw std::invalid_argument("pack_release_box: " + std::to_string(spots.size()) +
-                                    " spots for " + std::to_string(radii.size()) + " rocks");
-    }
     const auto spot = [&](std::size_t i) -> const std::optional<Vec2>& {
         static const std::optional<Vec2> none;
         return spots.empty() ? none : spots[i];
@@ -225,15 +240,7 @@ std::vector<Vec3> pack_release_box(const Slope& slope, const ReleaseBox& box,
     std::vector<Vec3> local(radii.size(), Vec3::Zero());
     double placed_volume = 0.0;
     double top = 0.0;
-    // The rocks without a spot in the box's order, then those with one, in index order.
-    std::vector<std::size_t> order;
-    for (const std::size_t index : drop_order(radii, box.order, generator)) {
-        if (!spot(index)) order.push_back(index);
-    }
-    for (std::size_t index = 0; index < radii.size(); ++index) {
-        if (spot(index)) order.push_back(index);
-    }
-    for (const std::size_t index : order) {
+    for (const std::size_t index : spots_last(drop_order(radii, box.order, generator), spots)) {
         const double r = radii[index];
         Vec3 best(0.0, 0.0, std::numeric_limits<double>::infinity());
         if (const std::optional<Vec2>& at = spot(index)) {
@@ -271,7 +278,8 @@ std::vector<Vec3> pack_release_box(const Slope& slope, const ReleaseBox& box,
 
 std::vector<RockPose> pack_release_box_flat(const Slope& slope, const ReleaseBox& box,
                                             const std::vector<Vec3>& half_extents,
-                                            std::mt19937_64& generator) {
+                                            std::mt19937_64& generator,
+                                            const std::vector<std::optional<Vec2>>& spots) {
     check_box(slope, box);
     std::vector<double> volumes;
     std::vector<double> longest;
@@ -301,11 +309,32 @@ std::vector<RockPose> pack_release_box_flat(const Slope& slope, const ReleaseBox
     std::size_t placed = 0;
     double placed_volume = 0.0;
     double top = 0.0;
-    for (const std::size_t index : drop_order(longest, box.order, generator)) {
+    for (const std::size_t index : spots_last(drop_order(longest, box.order, generator), spots)) {
         const Vec3& h = half_extents[index];
         Vec3 best(0.0, 0.0, std::numeric_limits<double>::infinity());
         bool across = false;
-        for (int k = 0; k < packing_candidates; ++k) {
+        const bool has_spot = !spots.empty() && spots[index];
+        if (has_spot) {
+            const Vec2& at = *spots[index];
+            for (const bool turned : {false, true}) {
+                const double hx = turned ? h.y() : h.x();
+                const double hy = turned ? h.x() : h.y();
+                const bool fits = at.x() >= hx && at.x() <= box.length - hx &&
+                                  std::abs(at.y()) <= half_width - hy;
+                if (fits && !std::isfinite(best.z())) {
+                    best = Vec3(
+                        at.x(), at.y(),
+                        map.highest(at.x() - hx, at.x() + hx, at.y() - hy, at.y() + hy) + h.z());
+                    across = turned;
+                }
+            }
+            if (!std::isfinite(best.z())) {
+                throw std::invalid_argument("rock " + std::to_string(index) +
+                                            ": lying flat at its spot (" + number(at.x()) + ", " +
+                                            number(at.y()) + ") m it crosses a wall of the box");
+            }
+        }
+        for (int k = 0; k < packing_candidates && !has_spot; ++k) {
             const double u = uniform01(generator);
             const double v = uniform01(generator);
             // The rock's long axis along the slope, then across it; the lower rest wins.

@@ -170,3 +170,23 @@ entry = "octahedron"
         flume + "sphericity = 0.8\ncatalogue = \"rocks/catalogue.toml\"\nentry = \"cube\"\n");
     CHECK_THAT(problem_for(both, "cluster.sphericity").message, Contains("not both"));
 }
+
+TEST_CASE("cluster.box.packing reads, writes back and lays marked rocks flat",
+          "[scenario][cluster]") {
+    const rockfall::engine::Scenario s =
+        parse(flume + "sphericity = 0.72\n[cluster.box]\npacking = \"flat\"\n");
+    CHECK(s.cluster->box.packing == rockfall::shapes::Packing::flat);
+    CHECK(parse(rockfall::scenario::format_scenario(s)).cluster->box.packing ==
+          rockfall::shapes::Packing::flat);
+    const ScenarioError error = parse_error(flume + R"(
+[cluster.box]
+packing = "flat"
+[[cluster.marked]]
+name = "m"
+orientation_deg = [0.0, 0.0, 45.0]
+)");
+    CHECK_THAT(problem_for(error, "cluster.marked[0].orientation_deg").message,
+               Contains("not with cluster.box.packing = \"flat\""));
+    const ScenarioError bad = parse_error(flume + "[cluster.box]\npacking = \"loose\"\n");
+    CHECK_THAT(problem_for(bad, "cluster.box.packing").message, Contains("\"spheres\", \"flat\""));
+}

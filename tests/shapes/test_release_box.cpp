@@ -232,6 +232,33 @@ TEST_CASE("a C2 cluster of elongated rocks packs lying flat into the default box
     CHECK_THROWS_AS(pack_release_box(slope, ReleaseBox{}, radii, generator), PackingError);
 }
 
+TEST_CASE("a rock with a spot lies flat there, on top of the others", "[release_box]") {
+    const Slope slope = flume(45.0);
+    const ReleaseBox box;
+    const OrientedBox region = release_box_region(slope, box);
+    std::vector<Vec3> half_extents = c2_half_extents(3);
+    const std::size_t n = half_extents.size();
+    half_extents.push_back(Vec3(0.05, 0.03, 0.02));
+    std::vector<std::optional<rockfall::shapes::Vec2>> spots(half_extents.size());
+    spots[n] = rockfall::shapes::Vec2(0.1, 0.2);
+    auto generator = make_generator(4);
+    const std::vector<RockPose> poses =
+        pack_release_box_flat(slope, box, half_extents, generator, spots);
+    require_packed_flat(region, poses, half_extents);
+    const Vec3 local = region.rotation.transpose() * (poses[n].center - region.center);
+    CHECK_THAT(local.x() + region.half_extents.x(), WithinAbs(0.1, 1e-12));
+    CHECK_THAT(local.y(), WithinAbs(0.2, 1e-12));
+    // Above the floor: on the rocks packed before it.
+    CHECK(local.z() + region.half_extents.z() > 0.02 + 1e-3);
+    // Long axis along the slope where it fits that way.
+    CHECK(std::abs((poses[n].rotation.col(0)).dot(region.rotation.col(0))) > 1.0 - 1e-12);
+
+    spots[n] = rockfall::shapes::Vec2(0.02, 0.0);  // 0.05 m half length does not fit either way
+    auto again = make_generator(4);
+    CHECK_THROWS_WITH(pack_release_box_flat(slope, box, half_extents, again, spots),
+                      Contains("rock " + std::to_string(n) + ": lying flat at its spot"));
+}
+
 TEST_CASE("flat packing is reproducible and its errors name the rock", "[release_box]") {
     const Slope slope = flume(30.0);
     const std::vector<Vec3> half_extents = c2_half_extents(4);

@@ -28,6 +28,12 @@ enum class PackingOrder {
     largest_first,  ///< by bounding radius descending (densest; the large rocks end up below)
 };
 
+/// The shapes rocks are packed as.
+enum class Packing {
+    spheres,  ///< bounding spheres, any orientation (pack_release_box)
+    flat,     ///< bounding boxes lying flat (pack_release_box_flat): denser for elongated rocks
+};
+
 /// A release box in the slope frame. Seed 001 gives no size; the defaults (a box across the
 /// flume's 0.60 m width, 0.40 m along the slope and 0.30 m high, the side walls' height) hold
 /// cluster C2 with room to spare (docs/clusters.md).
@@ -45,6 +51,8 @@ struct ReleaseBox {
     double floor = 0.0;
     /// The order rocks are dropped in.
     PackingOrder order = PackingOrder::shuffled;
+    /// What the engine packs the cluster's rocks as.
+    Packing packing = Packing::spheres;
 };
 
 /// The box's inside as an OrientedBox in the slope frame (role slope, segment 0): its local x
@@ -116,8 +124,12 @@ struct RockPose {
 /// Reproducible as pack_release_box; the order's size is a rock's largest half extent. Throws
 /// std::invalid_argument for half extents that are not finite > 0 or a bad box, and
 /// PackingError as pack_release_box.
+///
+/// `spots` as pack_release_box's: a rock with a spot lies there (long axis along the slope, or
+/// across when it does not fit that way), after all the others.
 std::vector<RockPose> pack_release_box_flat(const Slope& slope, const ReleaseBox& box,
                                             const std::vector<Vec3>& half_extents,
-                                            std::mt19937_64& generator);
+                                            std::mt19937_64& generator,
+                                            const std::vector<std::optional<Vec2>>& spots = {});
 
 }  // namespace rockfall::shapes
