@@ -223,9 +223,11 @@ void print_summary(std::ostream& out, const engine::Scenario& scenario,
             << " rocks in the table only (--rock N prints rock N in full, --all-rocks every one)\n";
     }
     if (several) print_front(out, scenario, series.front);
+    const bool per_rock = scenario.numerics.wall_stepping == engine::WallStepping::per_rock;
     out << "simulated " << fmt("%.3f s", outcome.simulated_time) << " in " << outcome.coarse_steps
-        << " coarse + " << outcome.fine_steps << " fine (near-wall) steps; runtime "
-        << fmt("%.3f s", info.runtime) << '\n';
+        << " coarse + " << outcome.fine_steps
+        << (per_rock ? " wall sub-steps (of single rocks)" : " fine (near-wall) steps")
+        << "; runtime " << fmt("%.3f s", info.runtime) << '\n';
 }
 
 nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outcome& outcome,
@@ -302,6 +304,7 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
             {"simulated_time_s", outcome.simulated_time},
             {"coarse_steps", outcome.coarse_steps},
             {"fine_steps", outcome.fine_steps},
+            {"body_steps", outcome.body_steps},
             {"state_hash", hex(outcome.state_hash)},
             {"rocks", rocks},
             {"front", front_json(series.front)}};
