@@ -92,15 +92,19 @@ std::optional<risk::UntilRule> parse_until(const SweepArgs& args) {
     return rule;
 }
 
+// The method --method names ("mc" and "lhs" are short forms); none when it is not given.
+std::optional<risk::SweepSpec::Method> method_option(const std::string& name) {
+    if (name == "monte_carlo" || name == "mc") return risk::SweepSpec::Method::monte_carlo;
+    if (name == "latin_hypercube" || name == "lhs") return risk::SweepSpec::Method::latin_hypercube;
+    return std::nullopt;
+}
+
 // The spec as run: the file's [sweep] table with the command line's overrides.
 risk::SweepSpec effective_spec(const scenario::ScenarioFile& file, const SweepArgs& args) {
     risk::SweepSpec spec = file.has_sweep ? file.sweep : risk::sweep_defaults(file.scenario);
     if (args.samples) spec.samples = *args.samples;
     if (args.seed) spec.seed = *args.seed;
-    if (args.method == "monte_carlo" || args.method == "mc")
-        spec.method = risk::SweepSpec::Method::monte_carlo;
-    if (args.method == "latin_hypercube" || args.method == "lhs")
-        spec.method = risk::SweepSpec::Method::latin_hypercube;
+    if (const auto method = method_option(args.method)) spec.method = *method;
     scenario::validate_sweep(spec, file.scenario);
     return spec;
 }
@@ -150,9 +154,8 @@ void take_stored_settings(SweepArgs& args, const db::RunRecord& run, const std::
     if (!given("--samples")) args.samples = run.samples_planned;
     if (!given("--method")) args.method = run.method;
     // Before the method's own checks (--until with Latin hypercube), which would hide this.
-    const std::string method = args.method == "mc"    ? "monte_carlo"
-                               : args.method == "lhs" ? "latin_hypercube"
-                                                      : args.method;
+    const auto method_given = method_option(args.method);
+    const std::string method = method_given ? risk::to_string(*method_given) : args.method;
     if (method != run.method)
         throw std::invalid_argument(db_path + ": cannot resume: the database's method is " +
                                     run.method + " but this command gives " + method +
