@@ -45,6 +45,9 @@ struct SweepArgs {
     double trajectory_interval = 0.0;
     std::int64_t crash_after = -1;
     bool interrupt_at_create = false;
+    /// Names of the options given on the command line ("--seed", "scenario", ...): with
+    /// --resume, every result-deciding option not among them takes the database's value.
+    std::set<std::string> given;
 };
 
 // Set by SIGINT and SIGTERM; the sweep then stops taking samples, writes what finished and
@@ -89,15 +92,19 @@ std::optional<risk::UntilRule> parse_until(const SweepArgs& args) {
     return rule;
 }
 
+// The method --method names ("mc" and "lhs" are short forms); none when it is not given.
+std::optional<risk::SweepSpec::Method> method_option(const std::string& name) {
+    if (name == "monte_carlo" || name == "mc") return risk::SweepSpec::Method::monte_carlo;
+    if (name == "latin_hypercube" || name == "lhs") return risk::SweepSpec::Method::latin_hypercube;
+    return std::nullopt;
+}
+
 // The spec as run: the file's [sweep] table with the command line's overrides.
 risk::SweepSpec effective_spec(const scenario::ScenarioFile& file, const SweepArgs& args) {
     risk::SweepSpec spec = file.has_sweep ? file.sweep : risk::sweep_defaults(file.scenario);
     if (args.samples) spec.samples = *args.samples;
     if (args.seed) spec.seed = *args.seed;
-    if (args.method == "monte_carlo" || args.method == "mc")
-        spec.method = risk::SweepSpec::Method::monte_carlo;
-    if (args.method == "latin_hypercube" || args.method == "lhs")
-        spec.method = risk::SweepSpec::Method::latin_hypercube;
+    if (const auto method = method_option(args.method)) spec.method = *method;
     scenario::validate_sweep(spec, file.scenario);
     return spec;
 }
@@ -125,8 +132,98 @@ void replay_stored(const db::ResultsDb& results, const risk::UntilRule& rule,
     }
 }
 
-int run_sweep(const SweepArgs& args) {
-    const scenario::ScenarioFile file = scenario::load_scenario(args.scenario);
+// The run's settings JSON; an unreadable one (a damaged or hand-edited file) is refused.
+nlohmann::json stored_settings(const db::RunRecord& run, const std::string& db_path) {
+    try {
+        nlohmann::json settings = nlohmann::json::parse(run.settings_json);
+        if (settings.is_object()) return settings;
+    } catch (const nlohmann::json::exception&) {
+    }
+    throw std::invalid_argument(db_path +
+                                ": cannot resume: run.settings_json is not a JSON "
+                                "object (the file is damaged)");
+}
+
+// --resume: every option deciding the results or the stopping point that the command line
+// does not give takes the value the database stores; one it gives must equal the stored one.
+// The scenario, seed, method and sample count are then checked by check_resumable (which
+// compares with the scenario hash too).
+void take_stored_settings(SweepArgs& args, const db::RunRecord& run, const std::string& db_path) {
+    const auto given = [&](const std::string& option) { return args.given.contains(option); };
+    if (!given("--seed")) args.seed = run.seed;
+    if (!given("--samples")) args.samples = run.samples_planned;
+    if (!given("--method")) args.method = run.method;
+    // Before the method's own checks (--until with Latin hypercube), which would hide this.
+    const auto method_given = method_option(args.method);
+    const std::string method = method_given ? risk::to_string(*method_given) : args.method;
+    if (method != run.method)
+        throw std::invalid_argument(db_path + ": cannot resume: the database's method is " +
+                                    run.method + " but this command gives " + method +
+                                    "; leave the option out to take the stored value, or start "
+                                    "a new database");
+    const nlohmann::json settings = stored_settings(run, db_path);
+    const auto take = [&](const std::string& option, auto& value, const std::string& key) {
+        using T = std::decay_t<decltype(value)>;
+        if (!settings.contains(key)) return false;
+        T stored{};
+        try {
+            stored = settings.at(key).get<T>();
+        } catch (const nlohmann::json::exception&) {
+            throw std::invalid_argument(db_path + ": cannot resume: run.settings_json " + key +
+                                        " = " + settings.at(key).dump() +
+                                        " is not a valid value (the file is damaged)");
+        }
+        const auto shown = [](const T& v) {
+            const nlohmann::json json(v);
+            return json.is_string() && json.get<std::string>().empty() ? "(none)" : json.dump();
+        };
+        if (given(option) && value != stored)
+            throw std::invalid_argument(
+                db_path + ": cannot resume: the database's " + option + " is " + shown(stored) +
+                " but this command gives " + shown(value) +
+                "; leave the option out to take the stored value, or start a new database");
+        value = stored;
+        return true;
+    };
+    take("--trajectories", args.trajectory_interval, "trajectory_interval_s");
+    if (take("--until", args.until, "until")) {
+        if (!args.until.empty()) {
+            take("--half-width", args.half_width, "half_width");
+            take("--confidence", args.confidence, "confidence");
+            take("--check-every", args.check_every, "check_every");
+        }
+        return;
+    }
+    // Written before the --until options were stored: a stop rule other than a plain sample
+    // count cannot be rebuilt exactly from its description (rounded to 6 digits).
+    if (!given("--until") && run.stop_rule != std::to_string(run.samples_planned) + " samples")
+        throw std::invalid_argument(
+            db_path + ": cannot resume: the database's stop rule is \"" + run.stop_rule +
+            "\" but it does not store the --until options (written by an older rockfall): give "
+            "--until, --half-width, --confidence and --check-every as the run was started");
+}
+
+// The scenario of a sweep: the SCENARIO file, or with --resume and no file, the scenario
+// text the database stores (complete in itself: resolved `extends`, meshes as vertices).
+scenario::ScenarioFile sweep_scenario(const SweepArgs& args, const db::RunRecord* run) {
+    if (!args.scenario.empty()) return scenario::load_scenario(args.scenario);
+    if (run == nullptr)
+        throw std::invalid_argument(
+            "sweep needs a SCENARIO file; only `rockfall sweep --db FILE.db --resume` takes the "
+            "scenario from a database");
+    return scenario::parse_scenario_file(run->scenario_text, args.db + " (stored scenario)");
+}
+
+int run_sweep(SweepArgs& args) {
+    // --resume opens the database first: what the command line leaves out comes from it.
+    std::optional<db::ResultsDb> opened;
+    std::optional<db::RunRecord> stored_run;
+    if (args.resume) {
+        opened.emplace(db::ResultsDb::open(args.db, true));
+        stored_run = opened->run();
+        take_stored_settings(args, *stored_run, args.db);
+    }
+    const scenario::ScenarioFile file = sweep_scenario(args, stored_run ? &*stored_run : nullptr);
     // Samples run on the scenario and [sweep] table as the database stores them (parsed back
     // from its text), so that `simulate --from` replays them bit for bit: a mesh rock's or a
     // named shape's hull read back from stored vertices may list them in another order than
@@ -145,8 +242,14 @@ int run_sweep(const SweepArgs& args) {
     const std::string stop_rule =
         until ? until->describe() + ", at most " + std::to_string(spec.samples) + " samples"
               : std::to_string(spec.samples) + " samples";
-    const nlohmann::json settings = {{"threads", threads},
-                                     {"trajectory_interval_s", args.trajectory_interval}};
+    // Stored for --resume, which takes from them what its command line leaves out.
+    nlohmann::json settings = {{"threads", threads},
+                               {"trajectory_interval_s", args.trajectory_interval},
+                               {"until", args.until}};
+    if (until)
+        settings.update({{"half_width", args.half_width},
+                         {"confidence", args.confidence},
+                         {"check_every", args.check_every}});
     const db::RunRecord wanted = make_run_record(file, spec, stop_rule, settings);
 
     // Handlers before the database is made: a Ctrl-C while it is created then ends the run as
@@ -154,10 +257,8 @@ int run_sweep(const SweepArgs& args) {
     // and leaving the hidden part file.
     install_interrupt_handlers();
     if (args.interrupt_at_create) std::raise(SIGINT);
-    std::optional<db::ResultsDb> opened;
     if (args.resume) {
-        opened.emplace(db::ResultsDb::open(args.db, true));
-        check_resumable(opened->run(), wanted, args.db);
+        check_resumable(*stored_run, wanted, args.db);
     } else {
         opened.emplace(db::ResultsDb::create(args.db, wanted));
     }
@@ -177,6 +278,14 @@ int run_sweep(const SweepArgs& args) {
             if (!done.contains(i)) pending.push_back(i);
     }
 
+    // A finished run is left as it is, byte for byte.
+    if (args.resume && pending.empty() && stored_run->status == "complete") {
+        std::cerr << args.db << ": the run is complete already (" << stored.size()
+                  << " samples stored); nothing to run\n";
+        report::write_summary(std::cout, report::QueryFormat::text, args.db,
+                              db::summarize(results));
+        return 0;
+    }
     if (!args.quiet) {
         std::cerr << "sweep " << file.scenario.name << ": " << stop_rule << ", "
                   << risk::to_string(spec.method) << ", seed " << spec.seed << ", " << threads
@@ -235,7 +344,9 @@ int run_sweep(const SweepArgs& args) {
     results.finish(interrupted ? "interrupted" : "complete", utc_now());
     if (interrupted) {
         std::cerr << "interrupted: " << done << " samples are stored in " << args.db
-                  << "; continue with the same command and --resume\n";
+                  << "; continue with the same command and --resume, or with just `rockfall "
+                     "sweep --db "
+                  << args.db << " --resume`\n";
         return exit_interrupted;
     }
     if (monitor && !monitor->stop_at())
@@ -252,8 +363,9 @@ void register_sweep(CLI::App& app) {
     auto args = std::make_shared<SweepArgs>();
     CLI::App* cmd = app.add_subcommand(
         "sweep", "Run a Monte Carlo sweep of a scenario into an SQLite results database");
-    cmd->add_option("scenario", args->scenario, "Scenario file (TOML) with a [sweep] table")
-        ->required()
+    cmd->add_option("scenario", args->scenario,
+                    "Scenario file (TOML) with a [sweep] table; with --resume, default: the "
+                    "scenario stored in --db")
         ->check(CLI::ExistingFile);
     cmd->add_option("--db", args->db, "Results database to create (or continue with --resume)")
         ->required();
@@ -280,7 +392,7 @@ void register_sweep(CLI::App& app) {
         ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 30))
         ->capture_default_str();
     cmd->add_flag("--resume", args->resume,
-                  "Continue an interrupted sweep in --db (same scenario and options)");
+                  "Continue the sweep stored in --db; options left out take the stored values");
     cmd->add_flag("--quiet", args->quiet, "No progress display");
     cmd->add_option("--trajectories", args->trajectory_interval,
                     "Store every rock's trajectory every this many s (0: none)")
@@ -290,7 +402,9 @@ void register_sweep(CLI::App& app) {
     cmd->add_option("--crash-after", args->crash_after)->group("");
     // For the interrupt test: SIGINT to itself just before the database is created.
     cmd->add_flag("--interrupt-at-create", args->interrupt_at_create)->group("");
-    cmd->callback([args] {
+    cmd->callback([args, cmd] {
+        for (const CLI::Option* option : cmd->get_options())
+            if (option->count() > 0) args->given.insert(option->get_name());
         const int code = run_sweep(*args);
         if (code != 0) throw CLI::RuntimeError(code);
     });

@@ -64,8 +64,8 @@ void check_resumable(const db::RunRecord& run, const db::RunRecord& wanted,
                             const std::string& given) {
         throw std::invalid_argument(db_path + ": cannot resume: the database's " + what + " is " +
                                     stored + " but this command gives " + given +
-                                    "; resume with the same scenario file and options, or "
-                                    "start a new database");
+                                    "; leave the option or the SCENARIO file out to take "
+                                    "the stored one, or start a new database");
     };
     if (run.seed != wanted.seed)
         refuse("seed", std::to_string(run.seed), std::to_string(wanted.seed));

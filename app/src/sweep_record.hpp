@@ -35,7 +35,7 @@ db::RunRecord make_run_record(const scenario::ScenarioFile& file, const risk::Sw
                               const std::string& stop_rule, const nlohmann::json& settings);
 
 /// Throws std::invalid_argument naming the database and what differs when `run` was not made
-/// from the same scenario, spec and stop rule (--resume with other settings).
+/// from the same scenario, spec and stop rule (--resume with other settings given).
 void check_resumable(const db::RunRecord& run, const db::RunRecord& wanted,
                      const std::string& db_path);
 
