@@ -65,12 +65,6 @@ void print_hits(std::ostream& out, const engine::RockOutcome& rock) {
     }
 }
 
-// The rock as simulated.
-engine::RockSpec rock_spec(const engine::Scenario& scenario, const engine::RockOutcome& rock,
-                           std::size_t index, std::size_t count) {
-    return engine::simulated_rock(scenario, index, count, rock.size);
-}
-
 // The hits' count, largest peak normal force (N) and total normal impulse (N s).
 struct HitTotals {
     std::size_t count = 0;
@@ -110,7 +104,8 @@ void print_rock_table(std::ostream& out, const engine::Scenario& scenario,
            "  peak kN  impulse N s\n";
     for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
         const auto& rock = outcome.rocks[i];
-        const engine::RockSpec spec = rock_spec(scenario, rock, i, outcome.rocks.size());
+        const engine::RockSpec spec =
+            engine::simulated_rock(scenario, i, outcome.rocks.size(), rock.size);
         const HitTotals hits = hit_totals(rock);
         const RockSeries* s = series_of(series, i);
         char row[200];
@@ -201,7 +196,8 @@ void print_summary(std::ostream& out, const engine::Scenario& scenario,
             continue;
         }
         const auto& rock = outcome.rocks[i];
-        const engine::RockSpec spec = rock_spec(scenario, rock, i, outcome.rocks.size());
+        const engine::RockSpec spec =
+            engine::simulated_rock(scenario, i, outcome.rocks.size(), rock.size);
         out << "rock " << i + 1 << (rock.name.empty() ? "" : " \"" + rock.name + "\"") << ": "
             << rock_label(spec) << ' ' << fmt("%.3f m", spec.size) << ", "
             << fmt("%.0f kg/m3", spec.density) << ", " << fmt("%.2f kg", rock_mass(spec)) << '\n';
@@ -235,7 +231,8 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
     nlohmann::json rocks = nlohmann::json::array();
     for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
         const auto& rock = outcome.rocks[i];
-        const engine::RockSpec spec = rock_spec(scenario, rock, i, outcome.rocks.size());
+        const engine::RockSpec spec =
+            engine::simulated_rock(scenario, i, outcome.rocks.size(), rock.size);
         nlohmann::json stations = nlohmann::json::array();
         for (const auto& s : rock.stations) {
             stations.push_back({{"distance_from_toe_m", s.distance_from_toe},

@@ -55,6 +55,21 @@ Outcome simulate_from(const Scenario& scenario, std::uint64_t seed,
     return simulate(scenario, seed, options);
 }
 
+// Every rock's state at t = 0 lies inside the release box (1 mm slack across and along; its
+// centre below the box's top) and is nearly still: the cluster settled in the box.
+void check_settled_in_box(const Scenario& scenario, const std::map<int, RockState>& start) {
+    const shapes::Slope slope(scenario.slope);
+    const shapes::OrientedBox box = shapes::release_box_region(slope, scenario.cluster->box);
+    for (const auto& [index, s] : start) {
+        INFO("rock " << index);
+        const Vec3 local = box.rotation.transpose() * (s.position - box.center);
+        CHECK(std::abs(local.x()) <= box.half_extents.x() + 1e-3);
+        CHECK(std::abs(local.y()) <= box.half_extents.y() + 1e-3);
+        CHECK(local.z() <= box.half_extents.z());
+        CHECK(s.velocity.norm() < 0.5);
+    }
+}
+
 }  // namespace
 
 TEST_CASE("a cluster released from its box runs down the flume and comes to rest",
@@ -64,16 +79,9 @@ TEST_CASE("a cluster released from its box runs down the flume and comes to rest
     const Outcome outcome = simulate_from(scenario, 7, start);
     REQUIRE(outcome.rocks.size() == 20);
     // At the gate's opening every rock is inside the box and nearly still (settled).
-    const shapes::Slope slope(scenario.slope);
-    const shapes::OrientedBox box = shapes::release_box_region(slope, scenario.cluster->box);
     REQUIRE(start.size() == 20);
-    for (const auto& [index, s] : start) {
-        INFO("rock " << index);
-        const Vec3 local = box.rotation.transpose() * (s.position - box.center);
-        CHECK(std::abs(local.x()) <= box.half_extents.x() + 1e-3);
-        CHECK(std::abs(local.y()) <= box.half_extents.y() + 1e-3);
-        CHECK(s.velocity.norm() < 0.5);
-    }
+    check_settled_in_box(scenario, start);
+    const shapes::Slope slope(scenario.slope);
     int at_rest = 0;
     int hit_wall = 0;
     for (const RockOutcome& rock : outcome.rocks) {
@@ -154,15 +162,6 @@ TEST_CASE("a cluster of elongated rocks packs flat into the box and settles ther
     const Outcome outcome = simulate_from(scenario, 5, start);
     REQUIRE(outcome.rocks.size() == 31);
     CHECK(outcome.rocks[30].name == "yellow");
-    const shapes::Slope slope(scenario.slope);
-    const shapes::OrientedBox box = shapes::release_box_region(slope, scenario.cluster->box);
     REQUIRE(start.size() == 31);
-    for (const auto& [index, s] : start) {
-        INFO("rock " << index);
-        const Vec3 local = box.rotation.transpose() * (s.position - box.center);
-        CHECK(std::abs(local.x()) <= box.half_extents.x() + 1e-3);
-        CHECK(std::abs(local.y()) <= box.half_extents.y() + 1e-3);
-        CHECK(local.z() <= box.half_extents.z());
-        CHECK(s.velocity.norm() < 0.5);
-    }
+    check_settled_in_box(scenario, start);
 }
