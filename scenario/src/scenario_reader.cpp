@@ -263,6 +263,7 @@ engine::Scenario read_scenario(const toml::table& root, const std::string& file,
     with_table(r, "numerics", [&](TableReader& s) {
         read_fields(s, scenario.numerics, numerics_fields);
         read_enum(s, "wall_stepping", wall_stepping_names, scenario.numerics.wall_stepping);
+        read_enum(s, "sheet_contact", sheet_contact_names, scenario.numerics.sheet_contact);
     });
     r.finish();
     return scenario;

@@ -162,6 +162,11 @@ inline constexpr std::array<EnumName<engine::WallStepping>, 2> wall_stepping_nam
     {"world", engine::WallStepping::world},
 }};
 
+inline constexpr std::array<EnumName<engine::SheetContact>, 2> sheet_contact_names{{
+    {"structured", engine::SheetContact::structured},
+    {"mesh", engine::SheetContact::mesh},
+}};
+
 inline constexpr std::array<shapes::RockKind, 3> all_rock_kinds{
     shapes::RockKind::sphere, shapes::RockKind::massive, shapes::RockKind::planar};
 

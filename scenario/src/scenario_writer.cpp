@@ -191,6 +191,8 @@ std::string format_scenario(const engine::Scenario& s) {
     w.fields(s.numerics, detail::numerics_fields);
     w.line("wall_stepping",
            toml_string(detail::name_of(detail::wall_stepping_names, s.numerics.wall_stepping)));
+    w.line("sheet_contact",
+           toml_string(detail::name_of(detail::sheet_contact_names, s.numerics.sheet_contact)));
     return std::move(w).str();
 }
 

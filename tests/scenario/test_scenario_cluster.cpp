@@ -69,6 +69,7 @@ orientation_deg = [0.0, 10.0, 90.0]
 
 [numerics]
 wall_stepping = "world"
+sheet_contact = "mesh"
 )");
     REQUIRE(s.cluster);
     REQUIRE(s.cluster->marked.size() == 2);
@@ -87,6 +88,7 @@ wall_stepping = "world"
     CHECK(plain.rock.size == s.cluster->grading.d50);
     CHECK(plain.orientation_deg == rockfall::engine::Vec3(0.0, 10.0, 90.0));
     CHECK(s.numerics.wall_stepping == rockfall::engine::WallStepping::world);
+    CHECK(s.numerics.sheet_contact == rockfall::engine::SheetContact::mesh);
 
     const rockfall::engine::Scenario back = parse(rockfall::scenario::format_scenario(s));
     REQUIRE(back.cluster->marked.size() == 2);
@@ -101,6 +103,7 @@ wall_stepping = "world"
     CHECK(back.cluster->marked[1].orientation_deg == plain.orientation_deg);
     CHECK(back.cluster->marked[1].rock.material.friction == 0.4);
     CHECK(back.numerics.wall_stepping == rockfall::engine::WallStepping::world);
+    CHECK(back.numerics.sheet_contact == rockfall::engine::SheetContact::mesh);
 }
 
 TEST_CASE("named rocks read back, and the default wall stepping is per rock",
@@ -108,6 +111,7 @@ TEST_CASE("named rocks read back, and the default wall stepping is per rock",
     const rockfall::engine::Scenario s = parse("[[rocks]]\nname = \"boulder\"\nsize = 0.3\n");
     CHECK(s.rocks.at(0).name == "boulder");
     CHECK(s.numerics.wall_stepping == rockfall::engine::WallStepping::per_rock);
+    CHECK(s.numerics.sheet_contact == rockfall::engine::SheetContact::structured);
     const rockfall::engine::Scenario back = parse(rockfall::scenario::format_scenario(s));
     CHECK(back.rocks.at(0).name == "boulder");
 }

@@ -134,6 +134,15 @@ enum class WallStepping {
     world,
 };
 
+/// How rocks find their contacts with a perforated sheet (docs/scenarios.md, "Linings").
+enum class SheetContact {
+    /// From the sheet's structure: hull vertices against the top face, GJK against the rims of
+    /// the holes a rock dips into (the default).
+    structured,
+    /// Bullet's triangle-mesh contact, a GJK query per triangle near the rock.
+    mesh,
+};
+
 /// Time stepping and stop rule.
 struct Numerics {
     /// Coarse time step away from the wall, s, in [1e-5, 1e-2].
@@ -152,6 +161,8 @@ struct Numerics {
     int solver_iterations = 10;
     /// Stepping of wall impacts.
     WallStepping wall_stepping = WallStepping::per_rock;
+    /// Contact detection against a perforated sheet.
+    SheetContact sheet_contact = SheetContact::structured;
 };
 
 /// A cluster of rocks released together from a box (seed 001): sizes drawn from a grain-size
