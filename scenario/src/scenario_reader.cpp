@@ -247,6 +247,11 @@ engine::Scenario read_scenario(const toml::table& root, const std::string& file,
     });
     with_table(r, "wall_contact",
                [&](TableReader& s) { read_wall_contact(s, scenario.wall_contact); });
+    if (r.contains("wall_cells")) {
+        with_table(r, "wall_cells", [&](TableReader& s) {
+            read_fields(s, scenario.wall_cells.emplace(), wall_cells_fields);
+        });
+    }
     RockShapeCache shape_cache;
     with_table_array(r, "rocks", scenario.rocks, [&](TableReader& s, engine::RockRelease& rock) {
         read_rock(s, rock, shape_cache);

@@ -155,6 +155,10 @@ std::string format_scenario(const engine::Scenario& s) {
     w.header("wall_contact");
     w.line("model", toml_string(detail::name_of(detail::wall_model_names, s.wall_contact.model)));
     w.fields(s.wall_contact, detail::wall_contact_fields);
+    if (s.wall_cells) {
+        w.header("wall_cells");
+        w.fields(*s.wall_cells, detail::wall_cells_fields);
+    }
 
     for (const engine::RockRelease& rock : s.rocks) {
         w.array_header("rocks");

@@ -48,9 +48,7 @@ Scenario drop(double radius, double x, double y, bool sheet, SheetContact contac
 }
 
 // Where the rock's centre ends, m.
-Vec3 rest_position(const Scenario& scenario) {
-    return trajectory(scenario, 1e-2).back().position;
-}
+Vec3 rest_position(const Scenario& scenario) { return trajectory(scenario, 1e-2).back().position; }
 
 // The hole of the default sheet on that segment nearest to (0.6, 0).
 shapes::SheetHole middle_hole() {
@@ -96,7 +94,8 @@ TEST_CASE("a sphere rests on the sheet, on a hole's rim or through the hole wher
         // Centred within 1 mm (on the mesh the sphere settles 0.5 mm off the centre, on the
         // structured contact within 0.1 mm).
         CHECK_THAT((on_rim - hole.center).head<2>().norm(), WithinAbs(0.0, 1e-3));
-        const Vec3 sagged = rest_position(drop(big, hole.center.x(), hole.center.y(), true, contact));
+        const Vec3 sagged =
+            rest_position(drop(big, hole.center.x(), hole.center.y(), true, contact));
         CHECK_THAT(sagged.z(), WithinAbs(big, 2e-4));
         // A narrower one drops through onto the slope surface and stays inside the hole.
         const double small = 0.02;
@@ -156,8 +155,9 @@ TEST_CASE("the structured sheet contact and the sheet's mesh agree on a rolling 
                 }
             }
         }
-        std::cout << "sphere rolling over the sheet " << across << " m off the centre line: "
-                  << times[0] << " s structured, " << times[1] << " s mesh for 1.6 m\n";
+        std::cout << "sphere rolling over the sheet " << across
+                  << " m off the centre line: " << times[0] << " s structured, " << times[1]
+                  << " s mesh for 1.6 m\n";
         REQUIRE(times[0] > 0.0);
         REQUIRE(times[1] > 0.0);
         CHECK_THAT(times[0], WithinRel(times[1], 0.05));

@@ -1,6 +1,7 @@
 #pragma once
 /// A validated rockfall scenario: plain structs with documented defaults, SI units.
 
+#include "engine/pressure_cells.hpp"
 #include "shapes/grading.hpp"
 #include "shapes/release_box.hpp"
 #include "shapes/rocks.hpp"
@@ -199,6 +200,8 @@ struct Scenario {
     SurfaceMaterials materials;
     /// Compliant contact at the reaction wall.
     WallContact wall_contact;
+    /// Pressure cells over the reaction wall's face (engine/pressure_cells.hpp), if any.
+    std::optional<PressureCells> wall_cells;
     /// Rocks released together (at least one, or a cluster).
     std::vector<RockRelease> rocks = {RockRelease{}};
     /// A cluster released with them, or none.
