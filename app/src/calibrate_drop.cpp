@@ -13,8 +13,10 @@ namespace {
 using report::fmt;
 using risk::SampleSummary;
 
-const char* const kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
-                               "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+const char* const kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+                               "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"};
+// More shapes than this get no confidence band in the figure (it would hide the curves).
+constexpr std::size_t kBandedShapes = 3;
 
 std::string material_text(const engine::Material& m) {
     return "friction " + report::short_number(m.friction) + ", restitution " +
@@ -220,6 +222,9 @@ report::Plot drop_figure(const DropReport& report) {
     plot.y_min = 0.0;
     std::size_t colour = 0;
     std::optional<double> target;
+    const auto identified = static_cast<std::size_t>(
+        std::count_if(report.shapes.begin(), report.shapes.end(),
+                      [](const DropShapeRun& run) { return run.identification.has_value(); }));
     for (const DropShapeRun& run : report.shapes) {
         if (!run.identification) continue;
         const std::string color = kColors[colour++ % std::size(kColors)];
@@ -248,8 +253,10 @@ report::Plot drop_figure(const DropReport& report) {
         found.line = false;
         found.marker = report::Marker::square;
         found.marker_size = 7.0;
-        plot.series.push_back(lower);
-        plot.series.push_back(upper);
+        if (identified <= kBandedShapes) {
+            plot.series.push_back(lower);
+            plot.series.push_back(upper);
+        }
         plot.series.push_back(mean);
         plot.series.push_back(found);
         target = run.identification->target;

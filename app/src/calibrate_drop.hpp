@@ -52,7 +52,8 @@ nlohmann::json drop_json(const DropReport& report);
 /// One row per drop (every shape), with units in the column names.
 void write_drop_csv(std::ostream& out, const DropReport& report);
 
-/// Mean COR against surface restitution per identified shape, with the 95 % band of the mean,
+/// Mean COR against surface restitution per identified shape, with the 95 % band of the mean
+/// (up to three shapes),
 /// the target and the identified points (the paper's Fig. 11).
 report::Plot drop_figure(const DropReport& report);
 

@@ -358,7 +358,7 @@ RestitutionIdentification identify_surface_restitution(const DropTestSpec& spec,
                                                        const IdentificationOptions& options,
                                                        const DropProgress& progress) {
     check_drop_spec(spec);
-    require_number("target COR", target, 0.0, 1.0, true);
+    require_number("target_cor", target, 0.0, 1.0, true);
     detail::require(options.curve_points >= 2,
                     "curve points = " + std::to_string(options.curve_points) + ": must be >= 2");
     detail::require_positive("tolerance", options.tolerance, "");
@@ -391,7 +391,7 @@ RestitutionIdentification identify_surface_restitution(const DropTestSpec& spec,
             hi = std::max(hi, p.cor.mean);
         }
         std::ostringstream message;
-        message << "target COR = " << target << ": must be in [" << lo << ", " << hi
+        message << "target_cor = " << target << ": must be in [" << lo << ", " << hi
                 << "], the mean COR over surface restitution 0 to 1 for this rock (its own "
                    "restitution "
                 << spec.rock.material.restitution << " enters the contact's mean)";

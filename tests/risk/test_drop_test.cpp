@@ -131,7 +131,7 @@ TEST_CASE("identification recovers a known surface restitution from its own mean
 
     // A target the curve cannot reach names the reachable range.
     CHECK_THROWS_WITH(risk::identify_surface_restitution(spec, 0.99, options),
-                      Catch::Contains("target COR = 0.99: must be in ["));
+                      Catch::Contains("target_cor = 0.99: must be in ["));
 }
 
 TEST_CASE("drop tests are reproducible and independent of the thread count", "[unit]") {
@@ -172,5 +172,5 @@ TEST_CASE("bad drop test inputs are refused with field, value and range", "[unit
     CHECK_THROWS_AS(risk::run_drop_test(spec, 1), std::invalid_argument);
     spec = sphere_drops(3);
     CHECK_THROWS_WITH(risk::identify_surface_restitution(spec, 1.0, {}),
-                      Catch::Contains("target COR = 1: must be in (0, 1)"));
+                      Catch::Contains("target_cor = 1: must be in (0, 1)"));
 }
