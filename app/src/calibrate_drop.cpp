@@ -102,6 +102,8 @@ void print_identification(std::ostream& out, const DropShapeRun& run,
         << ", " << fmt("%.4f", id.achieved.mean_interval.upper) << "], target "
         << report::short_number(id.target) << "; " << id.curve.size() << " curve points, "
         << id.refinements.size() << " refinements\n";
+    out << "  consistent with the target (95 % CI of the mean contains it): surface restitution "
+        << fmt("%.3f", id.consistent.lower) << " to " << fmt("%.3f", id.consistent.upper) << '\n';
 }
 
 // The shortest text that reads back as the same double.
@@ -175,13 +177,15 @@ nlohmann::json drop_json(const DropReport& report) {
                                 {"normal_impulse_N_s", summary_json(r.normal_impulse)}};
         if (run.identification) {
             const risk::RestitutionIdentification& id = *run.identification;
-            shape["identification"] = {{"matched", "cor_" + to_string(report.definition)},
-                                       {"target", id.target},
-                                       {"surface_restitution", id.surface_restitution},
-                                       {"contact_restitution", id.contact_restitution},
-                                       {"achieved", summary_json(id.achieved)},
-                                       {"curve", curve_json(id.curve)},
-                                       {"refinements", curve_json(id.refinements)}};
+            shape["identification"] = {
+                {"matched", "cor_" + to_string(report.definition)},
+                {"target", id.target},
+                {"surface_restitution", id.surface_restitution},
+                {"contact_restitution", id.contact_restitution},
+                {"achieved", summary_json(id.achieved)},
+                {"consistent_surface_restitution", {id.consistent.lower, id.consistent.upper}},
+                {"curve", curve_json(id.curve)},
+                {"refinements", curve_json(id.refinements)}};
         }
         shapes.push_back(shape);
     }

@@ -183,8 +183,14 @@ void run(const DropArgs& args) {
         args.count * (1 + (args.target_cor ? options.curve_points + options.max_iterations : 0));
     Progress progress(std::cerr, progress_mode_for_stderr(args.quiet || args.json),
                       per_rock * static_cast<std::int64_t>(rocks.size()), "drops");
+    // The plan counts every refinement step an identification may take; it usually stops
+    // earlier, so the bar ends at the drops actually run.
     std::int64_t offset = 0;
-    const auto show = [&](std::int64_t done, std::int64_t) { progress.update(offset + done); };
+    std::int64_t last = 0;
+    const auto show = [&](std::int64_t done, std::int64_t) {
+        last = done;
+        progress.update(offset + done);
+    };
     const auto start = std::chrono::steady_clock::now();
     for (const Rock& rock : rocks) {
         DropShapeRun run;
@@ -199,13 +205,15 @@ void run(const DropArgs& args) {
         run.result = risk::run_drop_test(run.spec, report.threads, show);
         offset += args.count;
         if (args.target_cor) {
+            last = 0;
             run.identification =
                 risk::identify_surface_restitution(run.spec, *args.target_cor, options, show);
+            offset += last;
         }
-        offset = per_rock * static_cast<std::int64_t>(report.shapes.size() + 1);
         report.shapes.push_back(std::move(run));
     }
-    progress.finish(offset);
+    progress.finish(offset,
+                    args.target_cor ? "(identification needed fewer steps than planned)" : "");
     report.runtime =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -346,6 +346,35 @@ std::vector<DropTestResult> run_tests(const DropTestSpec& spec, const std::vecto
     return results;
 }
 
+// Where the band [lower, upper] of the mean, over points sorted by restitution, contains the
+// target: the first crossing of the upper bound to the last crossing of the lower bound.
+Interval consistent_range(const std::vector<CurvePoint>& points, double target) {
+    const auto cross = [&](std::size_t i, double (*bound)(const CurvePoint&)) {
+        const CurvePoint& a = points[i];
+        const CurvePoint& b = points[i + 1];
+        const double fa = bound(a) - target;
+        const double fb = bound(b) - target;
+        const double t = fa == fb ? 0.0 : fa / (fa - fb);
+        return a.surface_restitution + t * (b.surface_restitution - a.surface_restitution);
+    };
+    const auto upper = [](const CurvePoint& p) { return p.cor.mean_interval.upper; };
+    const auto lower = [](const CurvePoint& p) { return p.cor.mean_interval.lower; };
+    Interval range{points.front().surface_restitution, points.back().surface_restitution};
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (upper(points[i]) >= target) {
+            range.lower = i == 0 ? points[0].surface_restitution : cross(i - 1, upper);
+            break;
+        }
+    }
+    for (std::size_t j = points.size(); j-- > 0;) {
+        if (lower(points[j]) <= target) {
+            range.upper = j + 1 == points.size() ? points[j].surface_restitution : cross(j, lower);
+            break;
+        }
+    }
+    return range;
+}
+
 }  // namespace
 
 DropTestResult run_drop_test(const DropTestSpec& spec, int threads, const DropProgress& progress) {
@@ -434,10 +463,14 @@ RestitutionIdentification identify_surface_restitution(const DropTestSpec& spec,
     id.surface_restitution = best.surface_restitution;
     id.contact_restitution = best.contact_restitution;
     id.achieved = best.cor;
-    std::sort(id.refinements.begin(), id.refinements.end(),
-              [](const CurvePoint& x, const CurvePoint& y) {
-                  return x.surface_restitution < y.surface_restitution;
-              });
+    const auto by_restitution = [](const CurvePoint& x, const CurvePoint& y) {
+        return x.surface_restitution < y.surface_restitution;
+    };
+    std::sort(id.refinements.begin(), id.refinements.end(), by_restitution);
+    std::vector<CurvePoint> all = id.curve;
+    all.insert(all.end(), id.refinements.begin(), id.refinements.end());
+    std::stable_sort(all.begin(), all.end(), by_restitution);
+    id.consistent = consistent_range(all, target);
     return id;
 }
 

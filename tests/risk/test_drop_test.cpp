@@ -124,6 +124,8 @@ TEST_CASE("identification recovers a known surface restitution from its own mean
     CHECK_THAT(id.surface_restitution, WithinRel(0.45, 0.02));
     CHECK_THAT(id.contact_restitution, WithinRel(0.45, 0.02));
     CHECK_THAT(id.achieved.mean, WithinAbs(target, 0.01));
+    CHECK(id.consistent.lower <= id.surface_restitution + 1e-6);
+    CHECK(id.consistent.upper >= id.surface_restitution - 1e-6);
     REQUIRE(id.curve.size() == 11);
     CHECK(id.curve.front().surface_restitution == 0.0);
     CHECK(id.curve.back().surface_restitution == 1.0);

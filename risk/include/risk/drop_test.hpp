@@ -188,6 +188,10 @@ struct RestitutionIdentification {
     double contact_restitution = 0.0;
     /// The matched coefficient's distribution at the identified restitution.
     SampleSummary achieved;
+    /// Surface restitutions whose mean COR is consistent with the target: from where the
+    /// upper bound of the 95 % interval of the mean first reaches the target to where its lower
+    /// bound last does, interpolated linearly between the curve and refinement points.
+    Interval consistent;
     /// The curve (evenly spaced), then every refinement point, each sorted by restitution.
     std::vector<CurvePoint> curve;
     std::vector<CurvePoint> refinements;
