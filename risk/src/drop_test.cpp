@@ -62,6 +62,37 @@ void require_number(const char* field, double value, double lower, double upper,
 
 double kinetic_energy(const RockState& s) { return s.translational_energy + s.rotational_energy; }
 
+// The compression part of a first contact's normal impulse `impulse` (N s, vector), from the
+// states before and after it and the velocity at first touch.
+double compression_impulse(const RockState& before, const RockState& free, const Vec3& v_touch,
+                           const Vec3& impulse, const shapes::RockGeometry& geometry,
+                           double density, double surface_z) {
+    // Compression ends when the normal velocity of the impulse's point of action r is zero.
+    // The contact's linear and angular momentum changes give r: dL = r x J fixes r across J,
+    // the surface plane (r_z = surface - centre of mass) along it; with several touching
+    // points r is their impulse-weighted centre. With the impulse growing along its final
+    // direction d (per unit normal impulse), that velocity is linear in the normal impulse P:
+    // u(P) = u0 + K P, K = n . (d / m + (I^-1 (r x d)) x r), so P_c = -u0 / K (m v_in for a
+    // sphere).
+    if (!(impulse.z() > 0.0)) return 0.0;
+    const double mass = density * geometry.properties.volume;
+    const Vec3 principal = density * geometry.properties.principal_moments;
+    const auto inertia = [&principal](const RockState& s) -> Eigen::Matrix3d {
+        const Eigen::Matrix3d rotation = s.orientation.toRotationMatrix();
+        return rotation * principal.asDiagonal() * rotation.transpose();
+    };
+    const Vec3 d_angular =
+        inertia(free) * free.angular_velocity - inertia(before) * before.angular_velocity;
+    const Vec3 across = impulse.cross(d_angular) / impulse.squaredNorm();
+    const double r_z = surface_z - before.position.z();
+    const Vec3 r = across + ((r_z - across.z()) / impulse.z()) * impulse;
+    const Vec3 d = impulse / impulse.z();
+    const Eigen::Matrix3d inverse_inertia = inertia(before).inverse();
+    const double k_normal = d.z() / mass + (inverse_inertia * r.cross(d)).cross(r).z();
+    const double u0 = (v_touch + before.angular_velocity.cross(r)).z();
+    return k_normal > 0.0 ? std::clamp(-u0 / k_normal, 0.0, impulse.z()) : 0.0;
+}
+
 }  // namespace
 
 void check_drop_spec(const DropTestSpec& spec) {
@@ -151,29 +182,8 @@ DropMeasurement measure_drop(const std::vector<RockState>& states,
         ++first_free;
     const Vec3 impulse = m.mass * (states[first_free].velocity - v_touch);
     m.first_impulse = impulse.z();
-    // Compression ends when the normal velocity of the impulse's point of action r is zero.
-    // The first contact's linear and angular momentum changes give r: dL = r x J fixes r
-    // across J, the surface plane (r_z = surface - centre of mass) along it; with several
-    // touching points r is their impulse-weighted centre. With the impulse growing along its
-    // final direction d (per unit normal impulse), that velocity is linear in the normal
-    // impulse P: u(P) = u0 + K P, K = n . (d / m + (I^-1 (r x d)) x r), so P_c = -u0 / K
-    // (m v_in for a sphere).
-    const RockState& free = states[first_free];
-    const Vec3 principal = density * geometry.properties.principal_moments;
-    const auto inertia = [&principal](const RockState& s) -> Eigen::Matrix3d {
-        const Eigen::Matrix3d rotation = s.orientation.toRotationMatrix();
-        return rotation * principal.asDiagonal() * rotation.transpose();
-    };
-    const Vec3 d_angular =
-        inertia(free) * free.angular_velocity - inertia(before) * before.angular_velocity;
-    const Vec3 across = impulse.cross(d_angular) / impulse.squaredNorm();
-    const double r_z = surface_z - before.position.z();
-    const Vec3 r = across + ((r_z - across.z()) / impulse.z()) * impulse;
-    const Vec3 d = impulse / impulse.z();
-    const Eigen::Matrix3d inverse_inertia = inertia(before).inverse();
-    const double k_normal = d.z() / m.mass + (inverse_inertia * r.cross(d)).cross(r).z();
-    const double u0 = (v_touch + before.angular_velocity.cross(r)).z();
-    m.compression_impulse = k_normal > 0.0 ? std::min(m.first_impulse, -u0 / k_normal) : 0.0;
+    m.compression_impulse = compression_impulse(before, states[first_free], v_touch, impulse,
+                                                geometry, density, surface_z);
     m.restitution_impulse = m.first_impulse - m.compression_impulse;
     if (!m.rebounded) return m;
     m.rebound_speed = std::max(0.0, after.velocity.z());

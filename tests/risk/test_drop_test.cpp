@@ -30,7 +30,70 @@ risk::DropTestSpec sphere_drops(std::int64_t count) {
     return spec;
 }
 
+// A sphere's states every dt (continuous kinematics): a free fall from `height` (gap above the
+// surface at z = 0), a rebound at e times the touch speed (e = 0: it stays on the surface).
+std::vector<engine::RockState> synthetic_bounce(const shapes::RockGeometry& sphere, double height,
+                                                double e, double dt) {
+    constexpr double g = 9.81;
+    const double radius = sphere.radius;
+    const double touch = std::sqrt(2.0 * height / g);
+    const double rebound = e * g * touch;
+    std::vector<engine::RockState> states;
+    for (int k = 0; k * dt < 2.2 * touch; ++k) {
+        engine::RockState s;
+        s.time = k * dt;
+        const double after = s.time - touch;
+        if (after < 0.0) {
+            s.position.z() = radius + height - 0.5 * g * s.time * s.time;
+            s.velocity.z() = -g * s.time;
+        } else if (e > 0.0) {
+            s.position.z() = radius + rebound * after - 0.5 * g * after * after;
+            s.velocity.z() = rebound - g * after;
+        } else {
+            s.position.z() = radius;
+        }
+        s.translational_energy = 0.5 * 2600.0 * sphere.properties.volume * s.velocity.squaredNorm();
+        states.push_back(s);
+    }
+    return states;
+}
+
 }  // namespace
+
+TEST_CASE("the first bounce of a known trajectory gives its coefficients", "[unit]") {
+    const shapes::RockGeometry sphere = shapes::make_rock(shapes::RockKind::sphere, 0.2);
+    const double mass = 2600.0 * sphere.properties.volume;
+    const double v_in = std::sqrt(2.0 * 9.81 * 1.0);
+    const risk::DropMeasurement m =
+        risk::measure_drop(synthetic_bounce(sphere, 1.0, 0.4, 1e-5), sphere, 2600.0, 0.0, 9.81);
+    CHECK(m.rebounded);
+    CHECK_THAT(m.drop_height, WithinRel(1.0, 1e-6));
+    CHECK_THAT(m.approach_speed, WithinRel(v_in, 1e-6));
+    CHECK_THAT(m.rebound_speed, WithinRel(0.4 * v_in, 1e-3));
+    CHECK_THAT(m.rebound_height, WithinRel(0.16, 1e-3));
+    CHECK_THAT(m.cor_height, WithinRel(0.4, 1e-3));
+    CHECK_THAT(m.cor_speed, WithinRel(0.4, 1e-3));
+    CHECK_THAT(m.cor_kinetic, WithinRel(0.4, 1e-3));
+    CHECK_THAT(m.cor_energy, WithinRel(0.4, 1e-3));
+    CHECK_THAT(m.normal_impulse, WithinRel(mass * 1.4 * v_in, 1e-3));
+    CHECK_THAT(m.compression_impulse, WithinRel(mass * v_in, 1e-3));
+    CHECK_THAT(m.compression_impulse + m.restitution_impulse, WithinRel(m.first_impulse, 1e-12));
+
+    // Stopped dead on the surface: no rebound, every coefficient 0.
+    const risk::DropMeasurement dead =
+        risk::measure_drop(synthetic_bounce(sphere, 1.0, 0.0, 1e-4), sphere, 2600.0, 0.0, 9.81);
+    CHECK_FALSE(dead.rebounded);
+    CHECK(dead.cor_height == 0.0);
+    CHECK(dead.cor_speed == 0.0);
+    CHECK(dead.cor_kinetic == 0.0);
+    CHECK(dead.cor_energy == 0.0);
+    CHECK_THAT(dead.normal_impulse, WithinRel(mass * v_in, 1e-3));
+
+    // A rock that never touches is an error, not a zero.
+    std::vector<engine::RockState> falling = synthetic_bounce(sphere, 1.0, 0.4, 1e-4);
+    falling.resize(100);
+    CHECK_THROWS_AS(risk::measure_drop(falling, sphere, 2600.0, 0.0, 9.81), std::runtime_error);
+}
 
 TEST_CASE("Student t quantiles match the tables", "[unit]") {
     CHECK_THAT(risk::student_t_quantile(0.975, 1.0), WithinRel(12.706204736, 1e-8));
