@@ -101,7 +101,8 @@ void print_identification(std::ostream& out, const DropShapeRun& run,
         << fmt("%.4f", id.achieved.mean) << " [" << fmt("%.4f", id.achieved.mean_interval.lower)
         << ", " << fmt("%.4f", id.achieved.mean_interval.upper) << "], target "
         << report::short_number(id.target) << "; " << id.curve.size() << " curve points, "
-        << id.refinements.size() << " refinements\n";
+        << id.refinements.size()
+        << (id.refinements.size() == 1 ? " refinement\n" : " refinements\n");
     out << "  consistent with the target (95 % CI of the mean contains it): surface restitution "
         << fmt("%.3f", id.consistent.lower) << " to " << fmt("%.3f", id.consistent.upper) << '\n';
 }
