@@ -40,6 +40,8 @@ struct SweepArgs {
     double half_width = 0.01;
     double confidence = 0.95;
     std::int64_t check_every = 100;
+    /// --shard K/N as given ("" for the whole run).
+    std::string shard;
     bool resume = false;
     bool quiet = false;
     double trajectory_interval = 0.0;
@@ -132,18 +134,6 @@ void replay_stored(const db::ResultsDb& results, const risk::UntilRule& rule,
     }
 }
 
-// The run's settings JSON; an unreadable one (a damaged or hand-edited file) is refused.
-nlohmann::json stored_settings(const db::RunRecord& run, const std::string& db_path) {
-    try {
-        nlohmann::json settings = nlohmann::json::parse(run.settings_json);
-        if (settings.is_object()) return settings;
-    } catch (const nlohmann::json::exception&) {
-    }
-    throw std::invalid_argument(db_path +
-                                ": cannot resume: run.settings_json is not a JSON "
-                                "object (the file is damaged)");
-}
-
 // --resume: every option deciding the results or the stopping point that the command line
 // does not give takes the value the database stores; one it gives must equal the stored one.
 // The scenario, seed, method and sample count are then checked by check_resumable (which
@@ -161,7 +151,7 @@ void take_stored_settings(SweepArgs& args, const db::RunRecord& run, const std::
                                     run.method + " but this command gives " + method +
                                     "; leave the option out to take the stored value, or start "
                                     "a new database");
-    const nlohmann::json settings = stored_settings(run, db_path);
+    const nlohmann::json settings = stored_settings(run, db_path, "cannot resume: ");
     const auto take = [&](const std::string& option, auto& value, const std::string& key) {
         using T = std::decay_t<decltype(value)>;
         if (!settings.contains(key)) return false;
@@ -186,6 +176,12 @@ void take_stored_settings(SweepArgs& args, const db::RunRecord& run, const std::
         return true;
     };
     take("--trajectories", args.trajectory_interval, "trajectory_interval_s");
+    // A shard continues as that shard; a whole run (which stores no shard) stays whole.
+    if (!take("--shard", args.shard, "shard") && given("--shard"))
+        throw std::invalid_argument(db_path +
+                                    ": cannot resume: the database holds a whole run, "
+                                    "not a shard, but this command gives --shard " +
+                                    args.shard + "; leave --shard out, or start a new database");
     if (take("--until", args.until, "until")) {
         if (!args.until.empty()) {
             take("--half-width", args.half_width, "half_width");
@@ -236,6 +232,14 @@ int run_sweep(SweepArgs& args) {
         throw std::invalid_argument(
             "--until cannot be used with Latin hypercube sampling: its strata need the sample "
             "count fixed in advance; use method = \"monte_carlo\" or drop --until");
+    std::optional<Shard> shard;
+    if (!args.shard.empty()) shard = parse_shard(args.shard, "--shard");
+    if (shard && until)
+        throw std::invalid_argument(
+            "--until cannot be used with --shard " + args.shard +
+            ": the stop rule is checked on the completed prefix of the whole run, which no "
+            "shard holds; give the shards a fixed --samples and merge them (rockfall merge), or "
+            "run one sweep over MPI ranks with --until (docs/cluster.md)");
     const int threads = args.threads > 0
                             ? args.threads
                             : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -246,6 +250,7 @@ int run_sweep(SweepArgs& args) {
     nlohmann::json settings = {{"threads", threads},
                                {"trajectory_interval_s", args.trajectory_interval},
                                {"until", args.until}};
+    if (shard) settings["shard"] = shard->text();
     if (until)
         settings.update({{"half_width", args.half_width},
                          {"confidence", args.confidence},
@@ -274,9 +279,12 @@ int run_sweep(SweepArgs& args) {
     std::vector<std::int64_t> pending;
     {
         const std::set<std::int64_t> done(stored.begin(), stored.end());
-        for (std::int64_t i = 0; i < limit; ++i)
+        for (std::int64_t i = shard ? shard->index : 0; i < limit; i += shard ? shard->count : 1)
             if (!done.contains(i)) pending.push_back(i);
     }
+    // The samples this process is to hold when it is done: its shard's, or all.
+    const std::int64_t share =
+        shard ? (limit - shard->index + shard->count - 1) / shard->count : limit;
 
     // A finished run is left as it is, byte for byte.
     if (args.resume && pending.empty() && stored_run->status == "complete") {
@@ -287,14 +295,17 @@ int run_sweep(SweepArgs& args) {
         return 0;
     }
     if (!args.quiet) {
-        std::cerr << "sweep " << file.scenario.name << ": " << stop_rule << ", "
-                  << risk::to_string(spec.method) << ", seed " << spec.seed << ", " << threads
-                  << " thread" << (threads == 1 ? "" : "s") << " -> " << args.db << '\n';
+        std::cerr << "sweep " << file.scenario.name << ": " << stop_rule
+                  << (shard
+                          ? ", shard " + shard->text() + " (" + std::to_string(share) + " samples)"
+                          : std::string())
+                  << ", " << risk::to_string(spec.method) << ", seed " << spec.seed << ", "
+                  << threads << " thread" << (threads == 1 ? "" : "s") << " -> " << args.db << '\n';
         if (!stored.empty())
             std::cerr << "resuming: " << stored.size() << " samples stored, " << pending.size()
                       << " to run\n";
     }
-    Progress progress(std::cerr, progress_mode_for_stderr(args.quiet), limit, "samples");
+    Progress progress(std::cerr, progress_mode_for_stderr(args.quiet), share, "samples");
     auto done = static_cast<std::int64_t>(stored.size());
     progress.set_already(done);
 
@@ -391,6 +402,9 @@ void register_sweep(CLI::App& app) {
     cmd->add_option("--check-every", args->check_every, "Samples between --until checks")
         ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 30))
         ->capture_default_str();
+    cmd->add_option("--shard", args->shard,
+                    "Run only shard K of N (sample indices i with i % N == K) into --db, for "
+                    "`rockfall merge`; K/N, e.g. 0/4 (docs/cluster.md)");
     cmd->add_flag("--resume", args->resume,
                   "Continue the sweep stored in --db; options left out take the stored values");
     cmd->add_flag("--quiet", args->quiet, "No progress display");

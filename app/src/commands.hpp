@@ -46,4 +46,7 @@ void register_query(CLI::App& app);
 /// `rockfall sweep SCENARIO --db FILE`: a Monte Carlo sweep into a results database.
 void register_sweep(CLI::App& app);
 
+/// `rockfall merge OUT.db SHARD.db...`: shards of one sweep into one database.
+void register_merge(CLI::App& app);
+
 }  // namespace rockfall::app
