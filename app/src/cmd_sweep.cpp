@@ -7,6 +7,7 @@
 #include "report/query_report.hpp"
 #include "report/text_format.hpp"
 #include "scenario/scenario_file.hpp"
+#include "sweep_mpi.hpp"
 #include "sweep_record.hpp"
 
 #include "db/queries.hpp"
@@ -210,7 +211,51 @@ scenario::ScenarioFile sweep_scenario(const SweepArgs& args, const db::RunRecord
     return scenario::parse_scenario_file(run->scenario_text, args.db + " (stored scenario)");
 }
 
-int run_sweep(SweepArgs& args) {
+int thread_count(const SweepArgs& args) {
+    return args.threads > 0 ? args.threads
+                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+// The samples of this process's threads.
+class LocalSource final : public SampleSource {
+  public:
+    LocalSource(const risk::SweepSpec& spec, const engine::Scenario& base,
+                std::vector<std::int64_t> pending, const risk::RunnerOptions& options)
+        : runner_(spec, base, std::move(pending), options) {}
+    std::vector<risk::SampleResult> collect(std::chrono::milliseconds timeout) override {
+        return runner_.collect(timeout);
+    }
+    void stop() override { runner_.stop(); }
+    bool finished() const override { return runner_.finished(); }
+
+  private:
+    risk::SweepRunner runner_;
+};
+
+// A rank other than 0 of an MPI sweep: the setup from rank 0, then its chunks until the end.
+int serve_rank(mpi::Session& session, SweepArgs& args) {
+    install_interrupt_handlers();
+    const std::optional<mpi::Setup> setup = session.receive_setup();
+    if (!setup) return 0;  // rank 0 ended without a sweep and says why
+    const std::filesystem::path path = setup->scenario_path;
+    const scenario::ScenarioFile as_stored =
+        scenario::parse_scenario_file(setup->scenario_text, path.string(), path.parent_path());
+    args.seed = setup->seed;
+    args.samples = setup->samples;
+    args.method = setup->method;
+    risk::RunnerOptions options;
+    options.threads = thread_count(args);
+    options.trajectory_interval = setup->trajectory_interval;
+    try {
+        return session.serve(effective_spec(as_stored, args), as_stored.scenario, options,
+                             interrupt_signal);
+    } catch (const std::exception& error) {
+        std::cerr << "rockfall (MPI rank " << session.rank() << "): " << error.what() << '\n';
+        session.abort(exit_failure);
+    }
+}
+
+int sweep_as_owner(SweepArgs& args, mpi::Session* session) {
     // --resume opens the database first: what the command line leaves out comes from it.
     std::optional<db::ResultsDb> opened;
     std::optional<db::RunRecord> stored_run;
@@ -240,9 +285,7 @@ int run_sweep(SweepArgs& args) {
             ": the stop rule is checked on the completed prefix of the whole run, which no "
             "shard holds; give the shards a fixed --samples and merge them (rockfall merge), or "
             "run one sweep over MPI ranks with --until (docs/cluster.md)");
-    const int threads = args.threads > 0
-                            ? args.threads
-                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const int threads = thread_count(args);
     const std::string stop_rule =
         until ? until->describe() + ", at most " + std::to_string(spec.samples) + " samples"
               : std::to_string(spec.samples) + " samples";
@@ -300,7 +343,9 @@ int run_sweep(SweepArgs& args) {
                           ? ", shard " + shard->text() + " (" + std::to_string(share) + " samples)"
                           : std::string())
                   << ", " << risk::to_string(spec.method) << ", seed " << spec.seed << ", "
-                  << threads << " thread" << (threads == 1 ? "" : "s") << " -> " << args.db << '\n';
+                  << threads << " thread" << (threads == 1 ? "" : "s")
+                  << (session ? " x " + std::to_string(session->size()) + " MPI ranks" : "")
+                  << " -> " << args.db << '\n';
         if (!stored.empty())
             std::cerr << "resuming: " << stored.size() << " samples stored, " << pending.size()
                       << " to run\n";
@@ -312,7 +357,16 @@ int run_sweep(SweepArgs& args) {
     risk::RunnerOptions options;
     options.threads = threads;
     options.trajectory_interval = args.trajectory_interval;
-    risk::SweepRunner runner(spec, as_stored.scenario, pending, options);
+    std::unique_ptr<SampleSource> source;
+    if (session) {
+        session->send_setup({file.text, file.path.string(), spec.seed, spec.samples,
+                             risk::to_string(spec.method), args.trajectory_interval});
+        source =
+            session->owner_source(spec, as_stored.scenario, pending, options, interrupt_signal);
+    } else {
+        source = std::make_unique<LocalSource>(spec, as_stored.scenario, pending, options);
+    }
+    SampleSource& runner = *source;
     std::vector<db::SampleRecord> batch;
     auto last_write = std::chrono::steady_clock::now();
     const auto note = [&] {
@@ -366,6 +420,22 @@ int run_sweep(SweepArgs& args) {
                   << report::fmt("%.4f", monitor->half_width()) << "); raise --samples\n";
     report::write_summary(std::cout, report::QueryFormat::text, args.db, db::summarize(results));
     return 0;
+}
+
+int run_sweep(SweepArgs& args) {
+    if (!mpi::launched_as_ranks()) return sweep_as_owner(args, nullptr);
+    mpi::Session session;
+    if (session.rank() != 0) return serve_rank(session, args);
+    try {
+        return sweep_as_owner(args, &session);
+    } catch (const std::exception& error) {
+        // The other ranks are running: end them all (what is committed stays for --resume).
+        if (session.others_running()) {
+            std::cerr << "rockfall (MPI rank 0): " << error.what() << '\n';
+            session.abort(exit_failure);
+        }
+        throw;
+    }
 }
 
 }  // namespace

@@ -10,6 +10,8 @@ rockfall=$1 scenario=$2 work=$3
 shift 3
 rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL: $*"; exit 1; }
+# shellcheck source=same_run.sh
+source "$(dirname "$0")/same_run.sh"
 "$rockfall" sweep "$scenario" --db "$work/whole.db" --threads 2 --quiet "$@" >/dev/null
 
 "$rockfall" sweep "$scenario" --db "$work/s0.db" --shard 0/3 --threads 2 --quiet "$@" >/dev/null
@@ -28,25 +30,10 @@ for k in 0 1 2; do
         fail "shard $k/3 does not record its shard"
 done
 
-# same A B: every table the sweep writes and the run record are equal in A and B.
-same() {
-    local table a b
-    for table in samples rocks outcomes stations wall_impacts trajectories zones; do
-        a=$(sqlite3 "$1" "SELECT * FROM $table ORDER BY 1, 2")
-        b=$(sqlite3 "$2" "SELECT * FROM $table ORDER BY 1, 2")
-        [ "$a" = "$b" ] || fail "table $table differs between $1 and $2"
-        [ -n "$a" ] || [ "$table" = wall_impacts ] || [ "$table" = trajectories ] ||
-            fail "table $table is empty"
-    done
-    local run="SELECT tool_version, build, scenario_name, scenario_text, scenario_hash, seed,
-                      method, samples_planned, stop_rule, json_remove(settings_json, '$.threads'),
-                      status FROM run"
-    [ "$(sqlite3 "$1" "$run")" = "$(sqlite3 "$2" "$run")" ] || fail "the run records differ"
-}
 out=$("$rockfall" merge "$work/merged.db" "$work/s2.db" "$work/s0.db" "$work/s1.db" 2>&1)
 grep -q "merged 3 files ([0-9]* of [0-9]* samples) into .*merged.db: complete" <<<"$out" ||
     fail "merge: $out"
-same "$work/whole.db" "$work/merged.db"
+same_run "$work/whole.db" "$work/merged.db"
 echo "3 shards merged equal the one-process sweep: $(sqlite3 "$work/merged.db" \
     "SELECT count(*) FROM samples") samples, $(sqlite3 "$work/merged.db" "SELECT count(*) FROM outcomes") rocks"
 
@@ -89,7 +76,7 @@ out=$("$rockfall" merge "$work/merged.db" "$work/s0.db" "$work/s1.db" "$work/s2.
 code=$?
 set -e
 [ "$code" -eq 2 ] && grep -q "merged.db exists already" <<<"$out" || fail "merge over a file: $code $out"
-same "$work/whole.db" "$work/merged.db"
+same_run "$work/whole.db" "$work/merged.db"
 
 # With --allow-gaps the merged run is interrupted; --resume alone runs the missing samples.
 out=$("$rockfall" merge "$work/gaps.db" "$work/s0.db" "$work/s2.db" --allow-gaps 2>&1)
@@ -98,5 +85,5 @@ grep -q "samples missing; run them with .rockfall sweep --db .*gaps.db --resume"
 [ "$(sqlite3 "$work/gaps.db" "SELECT status FROM run")" = interrupted ] ||
     fail "a merged run with gaps should be interrupted"
 "$rockfall" sweep --db "$work/gaps.db" --resume --quiet >/dev/null
-same "$work/whole.db" "$work/gaps.db"
+same_run "$work/whole.db" "$work/gaps.db"
 echo "merged with gaps, then resumed: equal to the one-process sweep"
