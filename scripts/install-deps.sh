@@ -13,6 +13,8 @@ packages=(
     zlib1g-dev
     # storage and command line
     libsqlite3-dev sqlite3 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+    # sweeps over MPI ranks (optional at build time; docs/cluster.md)
+    libopenmpi-dev openmpi-bin
     # tests and format check
     catch2 clang-format
     # fuzz targets (scripts/fuzz.sh, run by CI): clang and its libFuzzer runtime

@@ -7,6 +7,7 @@
 #include "report/query_report.hpp"
 #include "report/text_format.hpp"
 #include "scenario/scenario_file.hpp"
+#include "sweep_mpi.hpp"
 #include "sweep_record.hpp"
 
 #include "db/queries.hpp"
@@ -40,6 +41,8 @@ struct SweepArgs {
     double half_width = 0.01;
     double confidence = 0.95;
     std::int64_t check_every = 100;
+    /// --shard K/N as given ("" for the whole run).
+    std::string shard;
     bool resume = false;
     bool quiet = false;
     double trajectory_interval = 0.0;
@@ -132,18 +135,6 @@ void replay_stored(const db::ResultsDb& results, const risk::UntilRule& rule,
     }
 }
 
-// The run's settings JSON; an unreadable one (a damaged or hand-edited file) is refused.
-nlohmann::json stored_settings(const db::RunRecord& run, const std::string& db_path) {
-    try {
-        nlohmann::json settings = nlohmann::json::parse(run.settings_json);
-        if (settings.is_object()) return settings;
-    } catch (const nlohmann::json::exception&) {
-    }
-    throw std::invalid_argument(db_path +
-                                ": cannot resume: run.settings_json is not a JSON "
-                                "object (the file is damaged)");
-}
-
 // --resume: every option deciding the results or the stopping point that the command line
 // does not give takes the value the database stores; one it gives must equal the stored one.
 // The scenario, seed, method and sample count are then checked by check_resumable (which
@@ -161,7 +152,7 @@ void take_stored_settings(SweepArgs& args, const db::RunRecord& run, const std::
                                     run.method + " but this command gives " + method +
                                     "; leave the option out to take the stored value, or start "
                                     "a new database");
-    const nlohmann::json settings = stored_settings(run, db_path);
+    const nlohmann::json settings = stored_settings(run, db_path, "cannot resume: ");
     const auto take = [&](const std::string& option, auto& value, const std::string& key) {
         using T = std::decay_t<decltype(value)>;
         if (!settings.contains(key)) return false;
@@ -186,6 +177,12 @@ void take_stored_settings(SweepArgs& args, const db::RunRecord& run, const std::
         return true;
     };
     take("--trajectories", args.trajectory_interval, "trajectory_interval_s");
+    // A shard continues as that shard; a whole run (which stores no shard) stays whole.
+    if (!take("--shard", args.shard, "shard") && given("--shard"))
+        throw std::invalid_argument(db_path +
+                                    ": cannot resume: the database holds a whole run, "
+                                    "not a shard, but this command gives --shard " +
+                                    args.shard + "; leave --shard out, or start a new database");
     if (take("--until", args.until, "until")) {
         if (!args.until.empty()) {
             take("--half-width", args.half_width, "half_width");
@@ -214,7 +211,51 @@ scenario::ScenarioFile sweep_scenario(const SweepArgs& args, const db::RunRecord
     return scenario::parse_scenario_file(run->scenario_text, args.db + " (stored scenario)");
 }
 
-int run_sweep(SweepArgs& args) {
+int thread_count(const SweepArgs& args) {
+    return args.threads > 0 ? args.threads
+                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+// The samples of this process's threads.
+class LocalSource final : public SampleSource {
+  public:
+    LocalSource(const risk::SweepSpec& spec, const engine::Scenario& base,
+                std::vector<std::int64_t> pending, const risk::RunnerOptions& options)
+        : runner_(spec, base, std::move(pending), options) {}
+    std::vector<risk::SampleResult> collect(std::chrono::milliseconds timeout) override {
+        return runner_.collect(timeout);
+    }
+    void stop() override { runner_.stop(); }
+    bool finished() const override { return runner_.finished(); }
+
+  private:
+    risk::SweepRunner runner_;
+};
+
+// A rank other than 0 of an MPI sweep: the setup from rank 0, then its chunks until the end.
+int serve_rank(mpi::Session& session, SweepArgs& args) {
+    install_interrupt_handlers();
+    const std::optional<mpi::Setup> setup = session.receive_setup();
+    if (!setup) return 0;  // rank 0 ended without a sweep and says why
+    const std::filesystem::path path = setup->scenario_path;
+    const scenario::ScenarioFile as_stored =
+        scenario::parse_scenario_file(setup->scenario_text, path.string(), path.parent_path());
+    args.seed = setup->seed;
+    args.samples = setup->samples;
+    args.method = setup->method;
+    risk::RunnerOptions options;
+    options.threads = thread_count(args);
+    options.trajectory_interval = setup->trajectory_interval;
+    try {
+        return session.serve(effective_spec(as_stored, args), as_stored.scenario, options,
+                             interrupt_signal);
+    } catch (const std::exception& error) {
+        std::cerr << "rockfall (MPI rank " << session.rank() << "): " << error.what() << '\n';
+        session.abort(exit_failure);
+    }
+}
+
+int sweep_as_owner(SweepArgs& args, mpi::Session* session) {
     // --resume opens the database first: what the command line leaves out comes from it.
     std::optional<db::ResultsDb> opened;
     std::optional<db::RunRecord> stored_run;
@@ -236,9 +277,15 @@ int run_sweep(SweepArgs& args) {
         throw std::invalid_argument(
             "--until cannot be used with Latin hypercube sampling: its strata need the sample "
             "count fixed in advance; use method = \"monte_carlo\" or drop --until");
-    const int threads = args.threads > 0
-                            ? args.threads
-                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    std::optional<Shard> shard;
+    if (!args.shard.empty()) shard = parse_shard(args.shard, "--shard");
+    if (shard && until)
+        throw std::invalid_argument(
+            "--until cannot be used with --shard " + args.shard +
+            ": the stop rule is checked on the completed prefix of the whole run, which no "
+            "shard holds; give the shards a fixed --samples and merge them (rockfall merge), or "
+            "run one sweep over MPI ranks with --until (docs/cluster.md)");
+    const int threads = thread_count(args);
     const std::string stop_rule =
         until ? until->describe() + ", at most " + std::to_string(spec.samples) + " samples"
               : std::to_string(spec.samples) + " samples";
@@ -246,6 +293,7 @@ int run_sweep(SweepArgs& args) {
     nlohmann::json settings = {{"threads", threads},
                                {"trajectory_interval_s", args.trajectory_interval},
                                {"until", args.until}};
+    if (shard) settings["shard"] = shard->text();
     if (until)
         settings.update({{"half_width", args.half_width},
                          {"confidence", args.confidence},
@@ -274,9 +322,12 @@ int run_sweep(SweepArgs& args) {
     std::vector<std::int64_t> pending;
     {
         const std::set<std::int64_t> done(stored.begin(), stored.end());
-        for (std::int64_t i = 0; i < limit; ++i)
+        for (std::int64_t i = shard ? shard->index : 0; i < limit; i += shard ? shard->count : 1)
             if (!done.contains(i)) pending.push_back(i);
     }
+    // The samples this process is to hold when it is done: its shard's, or all.
+    const std::int64_t share =
+        shard ? (limit - shard->index + shard->count - 1) / shard->count : limit;
 
     // A finished run is left as it is, byte for byte.
     if (args.resume && pending.empty() && stored_run->status == "complete") {
@@ -287,21 +338,35 @@ int run_sweep(SweepArgs& args) {
         return 0;
     }
     if (!args.quiet) {
-        std::cerr << "sweep " << file.scenario.name << ": " << stop_rule << ", "
-                  << risk::to_string(spec.method) << ", seed " << spec.seed << ", " << threads
-                  << " thread" << (threads == 1 ? "" : "s") << " -> " << args.db << '\n';
+        std::cerr << "sweep " << file.scenario.name << ": " << stop_rule
+                  << (shard
+                          ? ", shard " + shard->text() + " (" + std::to_string(share) + " samples)"
+                          : std::string())
+                  << ", " << risk::to_string(spec.method) << ", seed " << spec.seed << ", "
+                  << threads << " thread" << (threads == 1 ? "" : "s")
+                  << (session ? " x " + std::to_string(session->size()) + " MPI ranks" : "")
+                  << " -> " << args.db << '\n';
         if (!stored.empty())
             std::cerr << "resuming: " << stored.size() << " samples stored, " << pending.size()
                       << " to run\n";
     }
-    Progress progress(std::cerr, progress_mode_for_stderr(args.quiet), limit, "samples");
+    Progress progress(std::cerr, progress_mode_for_stderr(args.quiet), share, "samples");
     auto done = static_cast<std::int64_t>(stored.size());
     progress.set_already(done);
 
     risk::RunnerOptions options;
     options.threads = threads;
     options.trajectory_interval = args.trajectory_interval;
-    risk::SweepRunner runner(spec, as_stored.scenario, pending, options);
+    std::unique_ptr<SampleSource> source;
+    if (session) {
+        session->send_setup({file.text, file.path.string(), spec.seed, spec.samples,
+                             risk::to_string(spec.method), args.trajectory_interval});
+        source =
+            session->owner_source(spec, as_stored.scenario, pending, options, interrupt_signal);
+    } else {
+        source = std::make_unique<LocalSource>(spec, as_stored.scenario, pending, options);
+    }
+    SampleSource& runner = *source;
     std::vector<db::SampleRecord> batch;
     auto last_write = std::chrono::steady_clock::now();
     const auto note = [&] {
@@ -357,6 +422,22 @@ int run_sweep(SweepArgs& args) {
     return 0;
 }
 
+int run_sweep(SweepArgs& args) {
+    if (!mpi::launched_as_ranks()) return sweep_as_owner(args, nullptr);
+    mpi::Session session;
+    if (session.rank() != 0) return serve_rank(session, args);
+    try {
+        return sweep_as_owner(args, &session);
+    } catch (const std::exception& error) {
+        // The other ranks are running: end them all (what is committed stays for --resume).
+        if (session.others_running()) {
+            std::cerr << "rockfall (MPI rank 0): " << error.what() << '\n';
+            session.abort(exit_failure);
+        }
+        throw;
+    }
+}
+
 }  // namespace
 
 void register_sweep(CLI::App& app) {
@@ -391,6 +472,9 @@ void register_sweep(CLI::App& app) {
     cmd->add_option("--check-every", args->check_every, "Samples between --until checks")
         ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 30))
         ->capture_default_str();
+    cmd->add_option("--shard", args->shard,
+                    "Run only shard K of N (sample indices i with i % N == K) into --db, for "
+                    "`rockfall merge`; K/N, e.g. 0/4 (docs/cluster.md)");
     cmd->add_flag("--resume", args->resume,
                   "Continue the sweep stored in --db; options left out take the stored values");
     cmd->add_flag("--quiet", args->quiet, "No progress display");

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Print help for every subcommand");
     rockfall::app::register_sweep(app);
+    rockfall::app::register_merge(app);
     rockfall::app::register_simulate(app);
     rockfall::app::register_soil(app);
     rockfall::app::register_formula(app);

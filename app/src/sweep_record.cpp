@@ -5,6 +5,63 @@
 #include <stdexcept>
 
 namespace rockfall::app {
+namespace {
+
+// A decimal whole number in [0, max] with digits only; none for anything else.
+std::optional<std::int64_t> whole_number(const std::string& text, std::int64_t max) {
+    if (text.empty() || text.size() > 18) return std::nullopt;
+    std::int64_t value = 0;
+    for (const char c : text) {
+        if (c < '0' || c > '9') return std::nullopt;
+        value = value * 10 + (c - '0');
+    }
+    if (value > max) return std::nullopt;
+    return value;
+}
+
+}  // namespace
+
+Shard parse_shard(const std::string& text, const std::string& option) {
+    const std::size_t slash = text.find('/');
+    const auto bad = [&](const std::string& why) {
+        return std::invalid_argument(option + " " + text + ": " + why);
+    };
+    if (slash == std::string::npos)
+        throw bad("must be K/N, shard K of N (K in [0, N - 1], N in [1, " +
+                  std::to_string(risk::max_samples) + "]), e.g. 0/4");
+    const auto index = whole_number(text.substr(0, slash), risk::max_samples);
+    const auto count = whole_number(text.substr(slash + 1), risk::max_samples);
+    if (!count || *count < 1)
+        throw bad("N (the number of shards) must be a whole number in [1, " +
+                  std::to_string(risk::max_samples) + "]");
+    if (!index || *index >= *count)
+        throw bad("K (this shard's number) must be a whole number in [0, " +
+                  std::to_string(*count - 1) + "]");
+    return {*index, *count};
+}
+
+nlohmann::json stored_settings(const db::RunRecord& run, const std::string& db_path,
+                               const std::string& doing) {
+    try {
+        nlohmann::json settings = nlohmann::json::parse(run.settings_json);
+        if (settings.is_object()) return settings;
+    } catch (const nlohmann::json::exception&) {
+    }
+    throw std::invalid_argument(db_path + ": " + doing +
+                                "run.settings_json is not a JSON object (the file is damaged)");
+}
+
+std::optional<Shard> stored_shard(const nlohmann::json& settings, const std::string& db_path) {
+    if (!settings.contains("shard")) return std::nullopt;
+    const nlohmann::json& value = settings.at("shard");
+    try {
+        if (value.is_string()) return parse_shard(value.get<std::string>(), "shard");
+    } catch (const std::invalid_argument&) {
+    }
+    throw std::invalid_argument(db_path + ": run.settings_json shard = " + value.dump() +
+                                " is not a shard K/N (the file is damaged)");
+}
+
 std::string identity_hash(const SweepIdentity& identity) {
     // FNV-1a 64-bit: offset basis and prime from the FNV specification.
     std::uint64_t hash = 0xcbf29ce484222325ULL;

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -22,6 +23,31 @@ struct SweepIdentity {
     nlohmann::json overrides;
     std::string stop_rule;
 };
+
+/// A share of a sweep's sample indices (`--shard K/N`): the indices i with i % count == index.
+struct Shard {
+    /// K, in [0, count - 1].
+    std::int64_t index = 0;
+    /// N, in [1, risk::max_samples].
+    std::int64_t count = 1;
+    /// Whether sample `sample` is in this shard.
+    bool holds(std::int64_t sample) const { return sample % count == index; }
+    /// The form `--shard` takes and run.settings_json stores: "K/N".
+    std::string text() const { return std::to_string(index) + "/" + std::to_string(count); }
+};
+
+/// Reads "K/N" (decimal digits only); throws std::invalid_argument naming `option`, the value
+/// and the allowed range for anything else (N < 1, K >= N, a sign, spaces, an overflow).
+Shard parse_shard(const std::string& text, const std::string& option);
+
+/// The run's settings (run.settings_json) as a JSON object; throws std::invalid_argument
+/// naming `db_path`, after `doing` ("cannot resume: "), when it is not one (a damaged file).
+nlohmann::json stored_settings(const db::RunRecord& run, const std::string& db_path,
+                               const std::string& doing);
+
+/// The shard a run's settings record ("shard": "K/N"); none for a whole run. Throws
+/// std::invalid_argument naming `db_path` when the stored value is malformed.
+std::optional<Shard> stored_shard(const nlohmann::json& settings, const std::string& db_path);
 
 /// 64-bit FNV-1a hash (Fowler, Noll and Vo; not cryptographic: it detects a changed scenario,
 /// it does not authenticate one) of the identity, as 16 hex digits.

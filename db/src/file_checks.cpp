@@ -219,6 +219,10 @@ std::string immutable_uri(const fs::path& path) {
     return "file:" + percent_encoded(fs::absolute(path).string()) + "?immutable=1";
 }
 
+std::string read_only_uri(const fs::path& path) {
+    return "file:" + percent_encoded(fs::absolute(path).string()) + "?mode=ro";
+}
+
 void remove_stale_part_files(const fs::path& target) {
     std::error_code ignored;
     for (const fs::path& stale : part_files(target).stale) fs::remove(stale, ignored);

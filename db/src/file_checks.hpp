@@ -28,6 +28,9 @@ bool read_only_location(const std::filesystem::path& path);
 /// The SQLite URI that opens `path` read-only and immutable (no locks, no -shm).
 std::string immutable_uri(const std::filesystem::path& path);
 
+/// The SQLite URI that opens `path` read-only (mode=ro), e.g. for ATTACH.
+std::string read_only_uri(const std::filesystem::path& path);
+
 /// Removes the part files of `target` (and their journals) that a killed rockfall left: those
 /// no live process holds. A part file another rockfall is building stays.
 void remove_stale_part_files(const std::filesystem::path& target);

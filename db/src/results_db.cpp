@@ -220,7 +220,8 @@ void insert_run(sqlite3* db, const fs::path& path, const RunRecord& run, RunKind
     }
 }
 
-// Writes the new database into `temporary` (rollback journal, so closing leaves one file).
+}  // namespace
+
 void build_database(const fs::path& temporary, const fs::path& path, const RunRecord& run,
                     RunKind kind, const std::function<void(sqlite3*)>& fill) {
     Connection connection;
@@ -241,8 +242,6 @@ void build_database(const fs::path& temporary, const fs::path& path, const RunRe
     const int code = sqlite3_close(connection.release());
     if (code != SQLITE_OK) sql::fail(nullptr, code, path, "closing the new database");
 }
-
-}  // namespace
 
 std::string_view to_string(RunKind kind) {
     return kind == RunKind::soil_flow ? "soil_flow" : "rock_sweep";

@@ -45,12 +45,22 @@ SampleResult run_sample(const SweepSpec& spec, const engine::Scenario& base, std
 
 SweepRunner::SweepRunner(const SweepSpec& spec, const engine::Scenario& base,
                          std::vector<std::int64_t> pending, const RunnerOptions& options)
-    : spec_(spec), base_(base), pending_(std::move(pending)), options_(options) {
+    : spec_(spec), base_(base), options_(options), pending_(std::move(pending)), closed_(true) {
     assert(options.threads >= 1);
     // A worker beyond one per sample would find nothing to take; not starting it also keeps
     // `--threads 1024 --samples 4` to 4 threads.
-    const std::size_t count = std::min(static_cast<std::size_t>(options.threads),
-                                       std::max<std::size_t>(pending_.size(), 1));
+    start(std::min(static_cast<std::size_t>(options.threads),
+                   std::max<std::size_t>(pending_.size(), 1)));
+}
+
+SweepRunner::SweepRunner(const SweepSpec& spec, const engine::Scenario& base,
+                         const RunnerOptions& options)
+    : spec_(spec), base_(base), options_(options) {
+    assert(options.threads >= 1);
+    start(static_cast<std::size_t>(options.threads));
+}
+
+void SweepRunner::start(std::size_t count) {
     running_ = static_cast<int>(count);
     workers_.reserve(count);
     try {
@@ -75,18 +85,23 @@ SweepRunner::~SweepRunner() {
 
 void SweepRunner::work() {
     for (;;) {
-        if (stopping_.load()) break;
-        const std::size_t slot = next_.fetch_add(1);
-        if (slot >= pending_.size()) break;
+        std::int64_t index = 0;
+        {
+            std::unique_lock lock(mutex_);
+            work_.wait(lock,
+                       [this] { return stopping_.load() || next_ < pending_.size() || closed_; });
+            if (stopping_.load() || next_ >= pending_.size()) break;
+            index = pending_[next_++];
+        }
         try {
-            SampleResult result =
-                run_sample(spec_, base_, pending_[slot], options_.trajectory_interval);
+            SampleResult result = run_sample(spec_, base_, index, options_.trajectory_interval);
             const std::lock_guard lock(mutex_);
             results_.push_back(std::move(result));
         } catch (...) {
             const std::lock_guard lock(mutex_);
             if (!error_) error_ = std::current_exception();
             stopping_.store(true);
+            work_.notify_all();
         }
         ready_.notify_all();
     }
@@ -102,7 +117,35 @@ std::vector<SampleResult> SweepRunner::collect(std::chrono::milliseconds timeout
     return std::exchange(results_, {});
 }
 
-void SweepRunner::stop() { stopping_.store(true); }
+void SweepRunner::stop() {
+    {
+        const std::lock_guard lock(mutex_);
+        stopping_.store(true);
+    }
+    work_.notify_all();
+}
+
+void SweepRunner::add(const std::vector<std::int64_t>& indices) {
+    {
+        const std::lock_guard lock(mutex_);
+        assert(!closed_ && "no indices after close()");
+        pending_.insert(pending_.end(), indices.begin(), indices.end());
+    }
+    work_.notify_all();
+}
+
+void SweepRunner::close() {
+    {
+        const std::lock_guard lock(mutex_);
+        closed_ = true;
+    }
+    work_.notify_all();
+}
+
+std::size_t SweepRunner::waiting() const {
+    const std::lock_guard lock(mutex_);
+    return pending_.size() - next_;
+}
 
 bool SweepRunner::finished() const {
     const std::lock_guard lock(mutex_);

@@ -76,6 +76,51 @@ TEST_CASE("sweep results do not depend on the thread count or the order samples 
     CHECK(alone.rocks.at(0).outcome.reach == one.at(5).rocks.at(0).outcome.reach);
 }
 
+TEST_CASE("a runner fed chunks until closed runs each index once, as a fixed list does",
+          "[risk][sweep]") {
+    const engine::Scenario base = quick_base();
+    const risk::SweepSpec spec = varied_spec();
+    std::vector<std::int64_t> order(static_cast<std::size_t>(spec.samples));
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::int64_t>(i);
+    const auto fixed = run_all(spec, base, 2, order);
+
+    risk::RunnerOptions options;
+    options.threads = 2;
+    risk::SweepRunner runner(spec, base, options);
+    CHECK(runner.waiting() == 0);
+    // With nothing added the workers wait rather than end.
+    CHECK(runner.collect(std::chrono::milliseconds(20)).empty());
+    CHECK_FALSE(runner.finished());
+    runner.add({0, 1, 2, 3, 4});
+    std::map<std::int64_t, risk::SampleResult> fed;
+    const auto take = [&] {
+        for (auto& result : runner.collect(std::chrono::milliseconds(100))) {
+            const std::int64_t index = result.inputs.index;
+            REQUIRE(fed.emplace(index, std::move(result)).second);
+        }
+    };
+    while (fed.size() < 5) take();
+    runner.add({11, 10, 9, 8, 7, 6, 5});
+    runner.close();
+    while (!runner.finished()) take();
+    REQUIRE(fed.size() == fixed.size());
+    for (const auto& [index, a] : fixed) {
+        const risk::SampleResult& b = fed.at(index);
+        CHECK(a.rocks.at(0).outcome.reach == b.rocks.at(0).outcome.reach);
+        CHECK(a.rocks.at(0).outcome.final_state.position ==
+              b.rocks.at(0).outcome.final_state.position);
+    }
+}
+
+TEST_CASE("a stopped runner that waits for chunks ends", "[risk][sweep]") {
+    const engine::Scenario base = quick_base();
+    risk::RunnerOptions options;
+    options.threads = 3;
+    risk::SweepRunner runner(varied_spec(), base, options);
+    runner.stop();
+    while (!runner.finished()) CHECK(runner.collect(std::chrono::milliseconds(100)).empty());
+}
+
 TEST_CASE("a worker's exception reaches the caller", "[risk][sweep]") {
     const engine::Scenario base = quick_base();
     risk::SweepSpec spec = varied_spec();

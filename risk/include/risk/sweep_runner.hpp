@@ -33,7 +33,8 @@ struct RunnerOptions {
 
 /// Worker threads that take sample indices from a list in list order and simulate them.
 /// Results come back through collect() in completion order; which thread ran a sample never
-/// changes its result (draw_sample is a pure function of the index).
+/// changes its result (draw_sample is a pure function of the index). The list is fixed at
+/// construction, or grows by add() until close() (an MPI rank fed chunks by the owner).
 class SweepRunner {
   public:
     /// Starts min(options.threads, pending.size()) workers (at least one) on `pending` (indices
@@ -41,6 +42,9 @@ class SweepRunner {
     /// std::runtime_error, saying how many threads did start, when the system refuses a thread.
     SweepRunner(const SweepSpec& spec, const engine::Scenario& base,
                 std::vector<std::int64_t> pending, const RunnerOptions& options);
+    /// Starts options.threads workers on an empty list that add() extends; the workers wait
+    /// for indices until close(). Throws as the constructor above.
+    SweepRunner(const SweepSpec& spec, const engine::Scenario& base, const RunnerOptions& options);
     /// Stops the workers (after their current sample) and joins them.
     ~SweepRunner();
     SweepRunner(const SweepRunner&) = delete;
@@ -53,19 +57,30 @@ class SweepRunner {
     /// Workers take no new sample; those running finish and can still be collected.
     void stop();
 
+    /// Appends indices to the list (not after close()).
+    void add(const std::vector<std::int64_t>& indices);
+    /// No more indices will be added: workers end once the list is done.
+    void close();
+    /// Indices added that no worker has taken yet.
+    std::size_t waiting() const;
+
     /// True when no worker runs and nothing is left to collect.
     bool finished() const;
 
   private:
+    void start(std::size_t count);
     void work();
 
     const SweepSpec& spec_;
     const engine::Scenario& base_;
-    const std::vector<std::int64_t> pending_;
     const RunnerOptions options_;
-    std::atomic<std::size_t> next_{0};
+    // The list and the next index to take, under mutex_; work_ signals an addition.
+    std::vector<std::int64_t> pending_;
+    std::size_t next_ = 0;
+    bool closed_ = false;
     std::atomic<bool> stopping_{false};
     mutable std::mutex mutex_;
+    std::condition_variable work_;
     std::condition_variable ready_;
     std::vector<SampleResult> results_;
     int running_ = 0;
