@@ -51,7 +51,8 @@ void print_pressure_cells(std::ostream& out, const engine::PressureMap& map,
     for (const engine::RockCellLoad& load : map.rocks) {
         const engine::RockOutcome& rock = outcome.rocks[load.rock];
         double true_peak = 0.0;
-        for (const auto& hit : rock.wall_hits) true_peak = std::max(true_peak, hit.peak_normal_force);
+        for (const auto& hit : rock.wall_hits)
+            true_peak = std::max(true_peak, hit.peak_normal_force);
         out << "  rock " << load.rock + 1 << (rock.name.empty() ? "" : " \"" + rock.name + "\"")
             << ": " << load.cells.size() << " cells, sampled peak "
             << fmt("%.1f N", load.sampled_peak_force) << " at "
@@ -60,22 +61,20 @@ void print_pressure_cells(std::ostream& out, const engine::PressureMap& map,
     }
 }
 
-nlohmann::json pressure_cells_json(const engine::PressureMap& map,
-                                   const engine::Outcome& outcome) {
+nlohmann::json pressure_cells_json(const engine::PressureMap& map, const engine::Outcome& outcome) {
     const engine::PressureCells& spec = map.spec;
     nlohmann::json cells = nlohmann::json::array();
     for (const auto& cell : map.cells) {
         if (cell.peak_force <= 0.0) continue;
-        cells.push_back(
-            {{"column", cell.column},
-             {"row", cell.row},
-             {"peak_force_N", cell.peak_force},
-             {"peak_time_s", cell.peak_time},
-             {"sampled_peak_force_N", cell.sampled_peak_force},
-             {"sampled_peak_pressure_kPa",
-              cell.sampled_peak_force / map.cell_area / kPascalPerKilopascal},
-             {"sampled_peak_time_s", map.sample_time(cell.sampled_peak_sample)},
-             {"saturated", cell.saturated}});
+        cells.push_back({{"column", cell.column},
+                         {"row", cell.row},
+                         {"peak_force_N", cell.peak_force},
+                         {"peak_time_s", cell.peak_time},
+                         {"sampled_peak_force_N", cell.sampled_peak_force},
+                         {"sampled_peak_pressure_kPa",
+                          cell.sampled_peak_force / map.cell_area / kPascalPerKilopascal},
+                         {"sampled_peak_time_s", map.sample_time(cell.sampled_peak_sample)},
+                         {"saturated", cell.saturated}});
     }
     nlohmann::json rocks = nlohmann::json::array();
     for (const engine::RockCellLoad& load : map.rocks) {
@@ -91,19 +90,20 @@ nlohmann::json pressure_cells_json(const engine::PressureMap& map,
     for (std::size_t k = 0; k < map.samples; ++k) {
         history.push_back({map.sample_time(k), map.total[k], map.total[k] - map.outside[k]});
     }
-    return {{"columns", spec.columns},
-            {"rows", spec.rows},
-            {"width_m", spec.width},
-            {"height_m", spec.height},
-            {"capacity_kPa", spec.capacity / kPascalPerKilopascal},
-            {"sample_interval_s", spec.sample_interval},
-            {"cell_area_m2", map.cell_area},
-            {"note", "cells: row-major index row * columns + column, 0-based, column 0 at "
-                     "y = -width / 2, row 0 at the wall's foot"},
-            {"loaded_cells", cells},
-            {"rocks", rocks},
-            {"force_history",
-             {{"columns", {"start_time_s", "wall_N", "grid_N"}}, {"rows", history}}}};
+    return {
+        {"columns", spec.columns},
+        {"rows", spec.rows},
+        {"width_m", spec.width},
+        {"height_m", spec.height},
+        {"capacity_kPa", spec.capacity / kPascalPerKilopascal},
+        {"sample_interval_s", spec.sample_interval},
+        {"cell_area_m2", map.cell_area},
+        {"note",
+         "cells: row-major index row * columns + column, 0-based, column 0 at "
+         "y = -width / 2, row 0 at the wall's foot"},
+        {"loaded_cells", cells},
+        {"rocks", rocks},
+        {"force_history", {{"columns", {"start_time_s", "wall_N", "grid_N"}}, {"rows", history}}}};
 }
 
 }  // namespace rockfall::report
