@@ -120,13 +120,7 @@ void set_writer_pragmas(sqlite3* db, const fs::path& path) {
                                 mode + "'); use a local disk",
                             Kind::bad_file);
     }
-    // wal_autocheckpoint: a checkpoint every 16384 pages (64 MB of -wal) rather than SQLite's
-    // 1000 (4 MB): each one copies pages back and syncs, and at the rate an MPI owner writes
-    // (bench_mpi, 200 000 one-rock samples) the default's checkpoints took the owner from
-    // about 60 000 to 20 000 samples/s. finish() still copies everything into the file.
-    sql::exec(db, path,
-              "PRAGMA synchronous = NORMAL; PRAGMA foreign_keys = ON; "
-              "PRAGMA wal_autocheckpoint = 16384",
+    sql::exec(db, path, "PRAGMA synchronous = NORMAL; PRAGMA foreign_keys = ON",
               "setting up the connection");
 }
 
