@@ -46,6 +46,8 @@ void register_query(CLI::App& app);
 /// `rockfall sweep SCENARIO --db FILE`: a Monte Carlo sweep into a results database.
 void register_sweep(CLI::App& app);
 
+/// `rockfall calibrate drop`: virtual drop tests and the surface restitution for a measured COR.
+void register_calibrate(CLI::App& app);
 /// `rockfall merge OUT.db SHARD.db...`: shards of one sweep into one database.
 void register_merge(CLI::App& app);
 

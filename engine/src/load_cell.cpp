@@ -20,7 +20,7 @@ void LoadCell::record(double dt, const std::optional<WallForce>& force, const Ro
     assert(dt > 0.0);
     if (!force || force->normal <= 0.0) {
         if (open_ && holding) {
-            open_->history.push_back(ForceSample{after.time - dt, 0.0, 0.0});
+            open_->history.push_back(ForceSample{after.time - dt, 0.0, 0.0, dt, Vec3::Zero()});
             open_->end_time = after.time;
         } else if (open_) {
             close();
@@ -48,7 +48,7 @@ void LoadCell::record(double dt, const std::optional<WallForce>& force, const Ro
         hit.peak_normal_force = force->normal;
         hit.peak_time = time;
     }
-    hit.history.push_back(ForceSample{time, force->normal, force->tangential});
+    hit.history.push_back(ForceSample{time, force->normal, force->tangential, dt, force->point});
     hit.end_time = after.time;
     hit.velocity_after = after.velocity;
     hit.angular_velocity_after = after.angular_velocity;

@@ -78,7 +78,7 @@ class Run {
 
   private:
     WallRock wall_rock(RockRun& rock) {
-        return {rock.geometry, rock.mass, rock.inertia, *rock.law, rock.track};
+        return {rock.geometry, rock.mass, rock.inertia, *rock.law, rock.track, rigid_resting_};
     }
     void wall_contacts();
     void substep_wall_contacts();
@@ -101,10 +101,15 @@ class Run {
     std::size_t moving_count_ = 0;
     // Rocks out of the world.
     std::int64_t gone_count_ = 0;
+    // RunOptions::rigid_resting_wall.
+    bool rigid_resting_ = true;
 };
 
 Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options)
-    : scenario_(scenario), slope_(scenario.slope), world_(scenario, slope_) {
+    : scenario_(scenario),
+      slope_(scenario.slope),
+      world_(scenario, slope_),
+      rigid_resting_(options.rigid_resting_wall) {
     assert(!scenario.rocks.empty() || scenario.cluster);
     assert(options.trajectory_interval > 0.0);
     Random random(seed);

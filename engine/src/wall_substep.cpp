@@ -51,15 +51,17 @@ WallContactAt wall_contact_at(const shapes::OrientedBox& wall, const WallRock& r
         state.velocity + state.angular_velocity.cross(overlap->point - state.position);
     if (first_touch) {
         const double normal_speed = std::max(0.0, -point_velocity.dot(overlap->normal));
-        if (normal_speed < kRestingContactSpeed) {
+        if (normal_speed < kRestingContactSpeed && rock.rigid_resting) {
             at.kind = WallContactAt::Kind::resting;
             return at;
         }
-        rock.law.begin_contact(normal_speed);
-        track.step = fine_step(rock.law, normal_speed, steps_per_contact, coarse_dt);
+        const double speed = std::max(normal_speed, kRestingContactSpeed);
+        rock.law.begin_contact(speed);
+        track.step = fine_step(rock.law, speed, steps_per_contact, coarse_dt);
         track.start = time;
-        track.duration = rock.law.contact_duration(normal_speed);
-    } else if (time - track.start > kRestingContactDurations * track.duration) {
+        track.duration = rock.law.contact_duration(speed);
+    } else if (rock.rigid_resting &&
+               time - track.start > kRestingContactDurations * track.duration) {
         at.kind = WallContactAt::Kind::resting;
         return at;
     }

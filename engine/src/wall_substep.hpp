@@ -55,6 +55,8 @@ struct WallRock {
     Vec3 inertia = Vec3::Zero();
     WallContactLaw& law;
     WallContactTrack& track;
+    // False: no resting contact; every touch stays with the compliant law (RunOptions).
+    bool rigid_resting = true;
 };
 
 // The wall's action on `rock` in state `state` at `time` (s). At first touch the contact's

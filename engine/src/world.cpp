@@ -4,6 +4,7 @@
 #include "contact_settings.hpp"
 #include "coulomb_solver.hpp"
 #include "hull_contacts.hpp"
+#include "sheet_contacts.hpp"
 #include "terrain_shape.hpp"
 
 #include "shapes/lining.hpp"
@@ -109,6 +110,7 @@ std::size_t expected_rocks(const Scenario& scenario) {
 struct World::Impl {
     btDefaultCollisionConfiguration configuration;
     HullContactCreateFunc hull_contacts;
+    SheetContactCreateFunc sheet_contacts;
     btCollisionDispatcher dispatcher{&configuration};
     // One rock among a few dozen static boxes: the sweep-and-prune broadphase updates one
     // moving AABB per step against sorted static intervals (measured on the seed slope: the
@@ -130,7 +132,9 @@ struct World::Impl {
     // material.
     std::vector<std::unique_ptr<btSphereShape>> lining_spheres;
     std::vector<std::unique_ptr<btCompoundShape>> lining_tiles;
-    std::unique_ptr<TerrainShape> lining_sheet;
+    // The sheet: structured (a SheetShape) or Bullet's triangles (numerics.sheet_contact).
+    std::unique_ptr<SheetShape> lining_sheet;
+    std::unique_ptr<TerrainShape> lining_sheet_mesh;
     std::vector<std::unique_ptr<btRigidBody>> lining_bodies;
     std::vector<RockBody> rocks;
     btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
@@ -145,6 +149,13 @@ struct World::Impl {
               std::pair{BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE},
               std::pair{CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE}}) {
             dispatcher.registerCollisionCreateFunc(a, b, &hull_contacts);
+        }
+        // A structured sheet (a SheetShape) with rock hulls and spheres, either order.
+        for (const int rock : {CONVEX_HULL_SHAPE_PROXYTYPE, SPHERE_SHAPE_PROXYTYPE}) {
+            dispatcher.registerCollisionCreateFunc(rock, CUSTOM_CONCAVE_SHAPE_TYPE,
+                                                   &sheet_contacts);
+            dispatcher.registerCollisionCreateFunc(CUSTOM_CONCAVE_SHAPE_TYPE, rock,
+                                                   &sheet_contacts);
         }
         dispatcher.setNearCallback(&near_callback);
     }
@@ -167,7 +178,8 @@ struct World::Impl {
         const int pool = static_cast<int>(std::min<std::size_t>(4096, 16 + 8 * rock_count));
         info.m_defaultMaxPersistentManifoldPoolSize = pool;
         info.m_defaultMaxCollisionAlgorithmPoolSize = pool;
-        info.m_customCollisionAlgorithmMaxElementSize = hull_contact_algorithm_size();
+        info.m_customCollisionAlgorithmMaxElementSize =
+            std::max(hull_contact_algorithm_size(), sheet_contact_algorithm_size());
         return info;
     }
 
@@ -290,9 +302,14 @@ void World::add_lining(const Scenario& scenario, const shapes::Slope& slope) {
     if (lining.sheet) {
         // T-junctions between the sheet's cells leave some edges without a neighbour, so the
         // internal-edge correction could not see them all: the sheet is used as triangles.
-        impl_->lining_sheet = std::make_unique<TerrainShape>(
-            shapes::perforated_sheet(slope, *lining.sheet).mesh, false);
-        add_body(impl_->lining_sheet->shape());
+        const shapes::SheetMesh sheet = shapes::perforated_sheet(slope, *lining.sheet);
+        if (scenario.numerics.sheet_contact == SheetContact::structured) {
+            impl_->lining_sheet = std::make_unique<SheetShape>(sheet);
+            add_body(*impl_->lining_sheet);
+        } else {
+            impl_->lining_sheet_mesh = std::make_unique<TerrainShape>(sheet.mesh, false);
+            add_body(impl_->lining_sheet_mesh->shape());
+        }
     }
 }
 

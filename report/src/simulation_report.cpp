@@ -1,5 +1,6 @@
 #include "report/simulation_report.hpp"
 
+#include "report/pressure_report.hpp"
 #include "report/text_format.hpp"
 
 #include "engine/simulation.hpp"
@@ -219,6 +220,11 @@ void print_summary(std::ostream& out, const engine::Scenario& scenario,
             << " rocks in the table only (--rock N prints rock N in full, --all-rocks every one)\n";
     }
     if (several) print_front(out, scenario, series.front);
+    if (scenario.wall_cells) {
+        const shapes::Slope slope(scenario.slope);
+        print_pressure_cells(out, engine::pressure_map(*scenario.wall_cells, slope, outcome),
+                             outcome);
+    }
     const bool per_rock = scenario.numerics.wall_stepping == engine::WallStepping::per_rock;
     out << "simulated " << fmt("%.3f s", outcome.simulated_time) << " in " << outcome.coarse_steps
         << " coarse + " << outcome.fine_steps
@@ -294,8 +300,15 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
         entry["distance_travelled_m"] = s ? nlohmann::json(s->distance()) : nullptr;
         entry["speed_by_distance"] = distance_json(s);
     }
+    nlohmann::json cells = nullptr;
+    if (scenario.wall_cells) {
+        const shapes::Slope slope(scenario.slope);
+        cells = pressure_cells_json(engine::pressure_map(*scenario.wall_cells, slope, outcome),
+                                    outcome);
+    }
     return {{"scenario", scenario.name},
             {"scenario_file", info.scenario_path},
+            {"pressure_cells", cells},
             {"seed", info.seed},
             {"runtime_s", info.runtime},
             {"simulated_time_s", outcome.simulated_time},

@@ -247,6 +247,11 @@ engine::Scenario read_scenario(const toml::table& root, const std::string& file,
     });
     with_table(r, "wall_contact",
                [&](TableReader& s) { read_wall_contact(s, scenario.wall_contact); });
+    if (r.contains("wall_cells")) {
+        with_table(r, "wall_cells", [&](TableReader& s) {
+            read_fields(s, scenario.wall_cells.emplace(), wall_cells_fields);
+        });
+    }
     RockShapeCache shape_cache;
     with_table_array(r, "rocks", scenario.rocks, [&](TableReader& s, engine::RockRelease& rock) {
         read_rock(s, rock, shape_cache);
@@ -263,6 +268,7 @@ engine::Scenario read_scenario(const toml::table& root, const std::string& file,
     with_table(r, "numerics", [&](TableReader& s) {
         read_fields(s, scenario.numerics, numerics_fields);
         read_enum(s, "wall_stepping", wall_stepping_names, scenario.numerics.wall_stepping);
+        read_enum(s, "sheet_contact", sheet_contact_names, scenario.numerics.sheet_contact);
     });
     r.finish();
     return scenario;

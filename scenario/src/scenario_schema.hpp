@@ -103,6 +103,15 @@ inline const Fields<engine::WallContact, 6> wall_contact_fields{{
     {"steps_per_contact", &engine::WallContact::steps_per_contact, "", closed(20, 1000)},
 }};
 
+inline const Fields<engine::PressureCells, 6> wall_cells_fields{{
+    {"columns", &engine::PressureCells::columns, "", closed(1, 256)},
+    {"rows", &engine::PressureCells::rows, "", closed(1, 256)},
+    {"width", &engine::PressureCells::width, "m", positive()},
+    {"height", &engine::PressureCells::height, "m", positive()},
+    {"capacity", &engine::PressureCells::capacity, "Pa", positive()},
+    {"sample_interval", &engine::PressureCells::sample_interval, "s", closed(1e-5, 0.1)},
+}};
+
 inline const Fields<engine::RockSpec, 2> rock_fields{{
     {"size", &engine::RockSpec::size, "m", closed(0.01, 10.0)},
     {"density", &engine::RockSpec::density, "kg/m3", closed(500.0, 10000.0)},
@@ -160,6 +169,11 @@ inline constexpr std::array<EnumName<engine::WallContact::Model>, 2> wall_model_
 inline constexpr std::array<EnumName<engine::WallStepping>, 2> wall_stepping_names{{
     {"per_rock", engine::WallStepping::per_rock},
     {"world", engine::WallStepping::world},
+}};
+
+inline constexpr std::array<EnumName<engine::SheetContact>, 2> sheet_contact_names{{
+    {"structured", engine::SheetContact::structured},
+    {"mesh", engine::SheetContact::mesh},
 }};
 
 inline constexpr std::array<shapes::RockKind, 3> all_rock_kinds{

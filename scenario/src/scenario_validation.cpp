@@ -216,6 +216,25 @@ void check_rock_names(Checker& c, const engine::Scenario& s) {
     }
 }
 
+// The pressure cells need the wall, and their grid must fit on its face.
+void check_wall_cells(Checker& c, const engine::Scenario& s) {
+    if (!s.wall_cells) return;
+    const engine::PressureCells& cells = *s.wall_cells;
+    if (!c.check_fields(cells, "wall_cells", wall_cells_fields)) return;
+    if (!s.slope.wall.enabled) {
+        c.fail("wall_cells", "[wall_cells]", "needs the reaction wall (slope.wall.enabled = true)");
+        return;
+    }
+    if (cells.width > s.slope.width) {
+        c.fail("wall_cells.width", format_number(cells.width) + " m",
+               "must be in (0, " + format_number(s.slope.width) + "] (the slope's width)");
+    }
+    if (cells.height > s.slope.wall.height) {
+        c.fail("wall_cells.height", format_number(cells.height) + " m",
+               "must be in (0, " + format_number(s.slope.wall.height) + "] (the wall's height)");
+    }
+}
+
 }  // namespace
 
 bool check_slope(Checker& c, const shapes::SlopeSpec& slope) {
@@ -258,6 +277,7 @@ std::vector<ScenarioProblem> find_problems(const engine::Scenario& s, const Sour
     c.check_fields(s.materials.side_walls, "materials.side_walls", material_fields);
     c.check_fields(s.materials.wall, "materials.wall", material_fields);
     c.check_fields(s.wall_contact, "wall_contact", wall_contact_fields);
+    check_wall_cells(c, s);
     if (s.rocks.empty() && !s.cluster) {
         c.fail("rocks", "[]", "must have at least one rock (or a [cluster])");
     }

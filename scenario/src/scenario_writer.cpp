@@ -155,6 +155,10 @@ std::string format_scenario(const engine::Scenario& s) {
     w.header("wall_contact");
     w.line("model", toml_string(detail::name_of(detail::wall_model_names, s.wall_contact.model)));
     w.fields(s.wall_contact, detail::wall_contact_fields);
+    if (s.wall_cells) {
+        w.header("wall_cells");
+        w.fields(*s.wall_cells, detail::wall_cells_fields);
+    }
 
     for (const engine::RockRelease& rock : s.rocks) {
         w.array_header("rocks");
@@ -191,6 +195,8 @@ std::string format_scenario(const engine::Scenario& s) {
     w.fields(s.numerics, detail::numerics_fields);
     w.line("wall_stepping",
            toml_string(detail::name_of(detail::wall_stepping_names, s.numerics.wall_stepping)));
+    w.line("sheet_contact",
+           toml_string(detail::name_of(detail::sheet_contact_names, s.numerics.sheet_contact)));
     return std::move(w).str();
 }
 

@@ -2,6 +2,7 @@
 // Private helpers shared by the linings and the release box: a segment's surface plane, the
 // check of a list of lined segments, and the rows of a hexagonal lattice.
 
+#include "shapes/lining.hpp"
 #include "shapes/polyhedron.hpp"
 #include "shapes/slope.hpp"
 
@@ -10,20 +11,7 @@
 
 namespace rockfall::shapes::detail {
 
-// The surface plane of one profile segment: p(u, v, w) = origin + u tangent + v y + w normal,
-// u along the surface from the segment's upper end, v = y, w along the upward normal.
-struct SegmentPlane {
-    Vec3 origin = Vec3::Zero();
-    Vec3 tangent = Vec3::UnitX();
-    Vec3 normal = Vec3::UnitZ();
-    double length = 0.0;
-    double half_width = 0.0;
-    int index = 0;
-
-    Vec3 point(double u, double v, double w) const {
-        return origin + u * tangent + v * Vec3::UnitY() + w * normal;
-    }
-};
+using shapes::SegmentPlane;
 
 SegmentPlane segment_plane(const Slope& slope, int index);
 

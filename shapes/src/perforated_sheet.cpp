@@ -131,6 +131,9 @@ void ring_cell(SheetMesh& out, const detail::SegmentPlane& plane, const Cell& ce
     hole.center = plane.point(c.x(), c.y(), 0.0);
     hole.normal = plane.normal;
     hole.segment = plane.index;
+    hole.radius = r;
+    hole.sides = sides;
+    out.panels.back().holes.push_back(out.holes.size());
     out.holes.push_back(hole);
 }
 
@@ -173,6 +176,9 @@ SheetMesh perforated_sheet(const Slope& slope, const PerforatedSheet& sheet) {
     const double row = detail::hex_row_spacing(s);
     for (const int index : sheet.segments) {
         const detail::SegmentPlane plane = detail::segment_plane(slope, index);
+        SheetPanel& panel = out.panels.emplace_back();
+        panel.plane = plane;
+        panel.thickness = top;
         const double w = plane.half_width;
         const std::vector<double> rows =
             detail::centred_rows(0.5 * row, plane.length - 0.5 * row, row);
@@ -201,6 +207,15 @@ SheetMesh perforated_sheet(const Slope& slope, const PerforatedSheet& sheet) {
         }
     }
     return out;
+}
+
+bool inside_hole(const SheetHole& hole, double du, double dv) {
+    // Edge i joins the vertices at (i + 1/2) and (i + 3/2) sectors: its middle is at the angle
+    // (i + 1) sectors.
+    const double sector = kTwoPi / hole.sides;
+    const double nearest = std::round(std::atan2(dv, du) / sector) * sector;
+    const double apothem = hole.radius * std::cos(0.5 * sector);
+    return du * std::cos(nearest) + dv * std::sin(nearest) < apothem;
 }
 
 }  // namespace rockfall::shapes

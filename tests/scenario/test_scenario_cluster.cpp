@@ -69,6 +69,7 @@ orientation_deg = [0.0, 10.0, 90.0]
 
 [numerics]
 wall_stepping = "world"
+sheet_contact = "mesh"
 )");
     REQUIRE(s.cluster);
     REQUIRE(s.cluster->marked.size() == 2);
@@ -87,6 +88,7 @@ wall_stepping = "world"
     CHECK(plain.rock.size == s.cluster->grading.d50);
     CHECK(plain.orientation_deg == rockfall::engine::Vec3(0.0, 10.0, 90.0));
     CHECK(s.numerics.wall_stepping == rockfall::engine::WallStepping::world);
+    CHECK(s.numerics.sheet_contact == rockfall::engine::SheetContact::mesh);
 
     const rockfall::engine::Scenario back = parse(rockfall::scenario::format_scenario(s));
     REQUIRE(back.cluster->marked.size() == 2);
@@ -101,6 +103,7 @@ wall_stepping = "world"
     CHECK(back.cluster->marked[1].orientation_deg == plain.orientation_deg);
     CHECK(back.cluster->marked[1].rock.material.friction == 0.4);
     CHECK(back.numerics.wall_stepping == rockfall::engine::WallStepping::world);
+    CHECK(back.numerics.sheet_contact == rockfall::engine::SheetContact::mesh);
 }
 
 TEST_CASE("named rocks read back, and the default wall stepping is per rock",
@@ -108,6 +111,7 @@ TEST_CASE("named rocks read back, and the default wall stepping is per rock",
     const rockfall::engine::Scenario s = parse("[[rocks]]\nname = \"boulder\"\nsize = 0.3\n");
     CHECK(s.rocks.at(0).name == "boulder");
     CHECK(s.numerics.wall_stepping == rockfall::engine::WallStepping::per_rock);
+    CHECK(s.numerics.sheet_contact == rockfall::engine::SheetContact::structured);
     const rockfall::engine::Scenario back = parse(rockfall::scenario::format_scenario(s));
     CHECK(back.rocks.at(0).name == "boulder");
 }
@@ -189,4 +193,38 @@ orientation_deg = [0.0, 0.0, 45.0]
                Contains("not with cluster.box.packing = \"flat\""));
     const ScenarioError bad = parse_error(flume + "[cluster.box]\npacking = \"loose\"\n");
     CHECK_THAT(problem_for(bad, "cluster.box.packing").message, Contains("\"spheres\", \"flat\""));
+}
+
+TEST_CASE("[wall_cells] reads its grid, writes it back and checks it fits the wall",
+          "[scenario][wall_cells]") {
+    const rockfall::engine::Scenario s = parse(flume + R"(
+[wall_cells]
+columns = 8
+sample_interval = 0.0005
+)");
+    REQUIRE(s.wall_cells);
+    CHECK(s.wall_cells->columns == 8);
+    CHECK(s.wall_cells->rows == 16);  // defaults: seed 001's pad
+    CHECK(s.wall_cells->width == 0.6);
+    CHECK(s.wall_cells->capacity == 345e3);
+    CHECK(s.wall_cells->sample_interval == 0.0005);
+    const rockfall::engine::Scenario back = parse(rockfall::scenario::format_scenario(s));
+    REQUIRE(back.wall_cells);
+    CHECK(back.wall_cells->columns == 8);
+    CHECK(back.wall_cells->sample_interval == 0.0005);
+    CHECK(!parse(flume).wall_cells);
+
+    const ScenarioError error = parse_error(flume + R"(
+[wall_cells]
+rows = 0
+width = 0.7
+capacity = -1.0
+)");
+    CHECK_THAT(problem_for(error, "wall_cells.rows").message, Contains("[1, 256]"));
+    CHECK_THAT(problem_for(error, "wall_cells.capacity").message, Contains("Pa"));
+    const ScenarioError wide = parse_error(flume + "[wall_cells]\nwidth = 0.7\nheight = 1.6\n");
+    CHECK_THAT(problem_for(wide, "wall_cells.width").message,
+               Contains("0.7 m: must be in (0, 0.6] (the slope's width)"));
+    CHECK_THAT(problem_for(wide, "wall_cells.height").message,
+               Contains("1.6 m: must be in (0, 1.5] (the wall's height)"));
 }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -350,4 +351,52 @@ TEST_CASE("seen from above, a terrain of the sheet has no ground over its holes"
                          WithinAbs(0.0015 / std::cos(deg(45.0)), 1e-9));
         }
     }
+}
+
+TEST_CASE("the sheet's panels and hole polygons describe the same sheet as its mesh", "[lining]") {
+    // The engine's structured sheet contact reads the panels and inside_hole, not the mesh:
+    // along the surface normal, the mesh has its top face over every point of a panel that no
+    // hole's polygon contains, and nothing over a point that one contains.
+    const Slope slope = flume(30.0);
+    PerforatedSheet sheet;
+    sheet.segments = {0, 1};
+    const SheetMesh out = perforated_sheet(slope, sheet);
+    REQUIRE(out.panels.size() == 2);
+    std::size_t holes = 0;
+    std::uint64_t state = 12345;
+    const auto uniform = [&state] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(state >> 11) * 0x1.0p-53;
+    };
+    int inside = 0;
+    for (const auto& panel : out.panels) {
+        REQUIRE(panel.thickness == sheet.thickness);
+        REQUIRE_THAT(
+            panel.plane.normal.dot(slope.surface_normal(panel.plane.index == 0 ? 0.5 : 2.0)),
+            WithinAbs(1.0, 1e-12));
+        holes += panel.holes.size();
+        for (int k = 0; k < 4000; ++k) {
+            // Off the cells' shared edges, which the ray test may miss on both sides.
+            const double u = 0.002 + uniform() * (panel.plane.length - 0.004);
+            const double v = (uniform() - 0.5) * (2.0 * panel.plane.half_width - 0.004);
+            const Vec3 p = panel.plane.origin + u * panel.plane.tangent + v * Vec3::UnitY();
+            bool in_hole = false;
+            for (const std::size_t index : panel.holes) {
+                const auto& hole = out.holes[index];
+                const Vec3 d = p - hole.center;
+                in_hole = in_hole ||
+                          rockfall::shapes::inside_hole(hole, d.dot(panel.plane.tangent), d.y());
+            }
+            inside += in_hole ? 1 : 0;
+            const std::optional<Hit> hit = hit_along(out.mesh, p, panel.plane.normal);
+            INFO("segment " << panel.plane.index << " u " << u << " v " << v);
+            REQUIRE(static_cast<bool>(hit) == !in_hole);
+            if (hit) REQUIRE_THAT(hit->w, WithinAbs(sheet.thickness, 1e-12));
+        }
+    }
+    CHECK(holes == out.holes.size());
+    // The holes' share of the area: 13 x 13 16-gons (8 r^2 sin(pi / 8)) in 1.82 m x 0.60 m.
+    const double r = 0.5 * sheet.hole_diameter;
+    const double share = 169.0 * 8.0 * r * r * std::sin(std::numbers::pi / 8.0) / (1.82 * 0.6);
+    CHECK_THAT(inside / 8000.0, WithinAbs(share, 0.02));
 }

@@ -73,6 +73,11 @@ struct ForceSample {
     double normal = 0.0;
     /// Magnitude of the tangential (friction) force on the wall, N.
     double tangential = 0.0;
+    /// Length of the step the force acted over from `time`, s.
+    double duration = 0.0;
+    /// Point of contact on the wall (world frame), m: the force-weighted mean of a resting
+    /// contact's points; zero when the force is zero.
+    Vec3 point = Vec3::Zero();
 };
 
 /// One contact event with the reaction wall, from first touch to separation (load cell).

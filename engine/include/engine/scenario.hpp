@@ -1,6 +1,7 @@
 #pragma once
 /// A validated rockfall scenario: plain structs with documented defaults, SI units.
 
+#include "engine/pressure_cells.hpp"
 #include "shapes/grading.hpp"
 #include "shapes/release_box.hpp"
 #include "shapes/rocks.hpp"
@@ -134,6 +135,15 @@ enum class WallStepping {
     world,
 };
 
+/// How rocks find their contacts with a perforated sheet (docs/scenarios.md, "Linings").
+enum class SheetContact {
+    /// From the sheet's structure: hull vertices against the top face, GJK against the rims of
+    /// the holes a rock dips into (the default).
+    structured,
+    /// Bullet's triangle-mesh contact, a GJK query per triangle near the rock.
+    mesh,
+};
+
 /// Time stepping and stop rule.
 struct Numerics {
     /// Coarse time step away from the wall, s, in [1e-5, 1e-2].
@@ -152,6 +162,8 @@ struct Numerics {
     int solver_iterations = 10;
     /// Stepping of wall impacts.
     WallStepping wall_stepping = WallStepping::per_rock;
+    /// Contact detection against a perforated sheet.
+    SheetContact sheet_contact = SheetContact::structured;
 };
 
 /// A cluster of rocks released together from a box (seed 001): sizes drawn from a grain-size
@@ -188,6 +200,8 @@ struct Scenario {
     SurfaceMaterials materials;
     /// Compliant contact at the reaction wall.
     WallContact wall_contact;
+    /// Pressure cells over the reaction wall's face (engine/pressure_cells.hpp), if any.
+    std::optional<PressureCells> wall_cells;
     /// Rocks released together (at least one, or a cluster).
     std::vector<RockRelease> rocks = {RockRelease{}};
     /// A cluster released with them, or none.

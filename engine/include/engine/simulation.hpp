@@ -37,6 +37,10 @@ struct RunOptions {
     TrajectorySink trajectory;
     /// Interval between trajectory samples, s (> 0).
     double trajectory_interval = 0.01;
+    /// When false, a slow touch or a long contact with the wall stays with the compliant law
+    /// instead of Bullet's rigid resting contact: the design before issue 13, in which a deposit
+    /// against the wall kept it at the fine step. For bench_cluster's comparison only.
+    bool rigid_resting_wall = true;
 };
 
 /// The rock of outcome entry `index` (of `count` rocks in the outcome) as simulated, drawn at

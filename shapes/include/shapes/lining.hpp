@@ -100,7 +100,26 @@ std::vector<Sphere> sphere_layer(const Slope& slope, const SphereLayer& layer);
 /// footprint. Throws std::invalid_argument as sphere_layer.
 std::vector<Sphere> bump_spheres(const Slope& slope, const Bumps& bumps);
 
-/// One hole of a perforated sheet.
+/// The surface plane of one profile segment: p(u, v, w) = origin + u tangent + v y + w normal,
+/// u along the surface from the segment's upper end, v = y, w along the upward normal.
+struct SegmentPlane {
+    Vec3 origin = Vec3::Zero();
+    Vec3 tangent = Vec3::UnitX();
+    Vec3 normal = Vec3::UnitZ();
+    /// Length along the surface and half the slope's width, m.
+    double length = 0.0;
+    double half_width = 0.0;
+    /// The segment's index.
+    int index = 0;
+
+    Vec3 point(double u, double v, double w) const {
+        return origin + u * tangent + v * Vec3::UnitY() + w * normal;
+    }
+};
+
+/// One hole of a perforated sheet: a regular polygon of `sides` vertices inscribed in the
+/// circle of `radius` about `center`, vertex i at the angle (i + 1/2) 2 pi / sides from the
+/// segment's tangent towards +y.
 struct SheetHole {
     /// Centre of the hole on the segment's surface (the sheet's underside), m.
     Vec3 center = Vec3::Zero();
@@ -108,6 +127,21 @@ struct SheetHole {
     Vec3 normal = Vec3::UnitZ();
     /// The segment it lies on.
     int segment = 0;
+    /// Radius of the circle the polygon is inscribed in, m.
+    double radius = 0.0;
+    /// Vertices of the polygon.
+    int sides = 0;
+};
+
+/// The part of a perforated sheet on one segment, as the rigid-body engine's structured contact
+/// sees it: the sheet covers plane.point(u, v, w) for u in [0, length], |v| <= half_width and
+/// w in [0, thickness], less its holes.
+struct SheetPanel {
+    SegmentPlane plane;
+    /// Sheet thickness, m.
+    double thickness = 0.0;
+    /// Indices into SheetMesh::holes of the holes on this panel.
+    std::vector<std::size_t> holes;
 };
 
 /// A perforated sheet as triangles, in the slope frame.
@@ -118,6 +152,8 @@ struct SheetMesh {
     TriangleMesh mesh;
     /// The holes cut.
     std::vector<SheetHole> holes;
+    /// One panel per lined segment, in the order of PerforatedSheet::segments.
+    std::vector<SheetPanel> panels;
     /// Triangles of the top face and of the hole walls (sum: mesh.triangles.size()).
     std::size_t top_triangles = 0;
     std::size_t wall_triangles = 0;
@@ -130,5 +166,10 @@ struct SheetMesh {
 /// one hole spacing wide along the side walls and the segment ends has no holes). Throws
 /// std::invalid_argument for a bad parameter or more than max_terrain_triangles triangles.
 SheetMesh perforated_sheet(const Slope& slope, const PerforatedSheet& sheet);
+
+/// Whether the point at (du, dv) from a hole's centre (along its panel's tangent and y) lies
+/// inside the hole's polygon: its projection on the normal of the nearest edge (the edge whose
+/// middle has the nearest angle) is below the apothem radius cos(pi / sides).
+bool inside_hole(const SheetHole& hole, double du, double dv);
 
 }  // namespace rockfall::shapes

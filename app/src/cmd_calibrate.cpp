@@ -1,0 +1,318 @@
+// `rockfall calibrate drop`: seed 001's drop test run virtually over many orientations, the
+// coefficients of restitution of the first bounce, and the surface restitution that reproduces
+// a measured mean kinematic COR (docs/calibration.md).
+
+#include "calibrate_drop.hpp"
+#include "commands.hpp"
+#include "integer_option.hpp"
+#include "output_file.hpp"
+#include "progress.hpp"
+#include "scenario/scenario_file.hpp"
+#include "scenario/shape_source.hpp"
+
+#include "risk/drop_test.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace rockfall::app {
+namespace {
+
+struct DropArgs {
+    scenario::ShapeRequest request;
+    std::optional<std::string> scenario;
+    double density = 2600.0;
+    double height = 1.0;
+    std::int64_t count = 40;
+    std::uint64_t seed = 1;
+    int threads = 0;
+    engine::Material surface;
+    double time_step = 1e-3;
+    std::optional<double> target_cor;
+    std::string cor_from = "height";
+    int curve_points = 11;
+    std::optional<std::string> svg;
+    std::optional<std::string> csv;
+    std::optional<std::string> fragment;
+    bool json = false;
+    bool quiet = false;
+};
+
+// "OPTION = VALUE UNIT: must be in [LOWER, UPPER]" unless the value lies in the range.
+void require_in(const char* option, double value, const char* unit, double lower, double upper,
+                bool open_lower = false) {
+    const bool above = open_lower ? value > lower : value >= lower;
+    if (std::isfinite(value) && above && value <= upper) return;
+    std::ostringstream message;
+    message << option << " = " << value << (*unit ? " " : "") << unit << ": must be in "
+            << (open_lower ? '(' : '[') << lower << ", " << upper << ']';
+    throw std::invalid_argument(message.str());
+}
+
+void check_args(const DropArgs& args) {
+    if (!(std::isfinite(args.height) && args.height > 0.0)) {
+        std::ostringstream message;
+        message << "--height = " << args.height << " m: must be finite and > 0";
+        throw std::invalid_argument(message.str());
+    }
+    require_in("--friction", args.surface.friction, "", 0.0, 2.0);
+    require_in("--restitution", args.surface.restitution, "", 0.0, 1.0);
+    require_in("--rolling-resistance", args.surface.rolling_resistance, "", 0.0, 1.0);
+    require_in("--time-step", args.time_step, "s", 1e-5, 1e-2);
+    require_in("--density", args.density, "kg/m3", 500.0, 10000.0);
+    if (args.request.size) require_in("--size", *args.request.size, "m", 0.01, 10.0);
+    if (args.target_cor) {
+        const double t = *args.target_cor;
+        if (!(std::isfinite(t) && t > 0.0 && t < 1.0)) {
+            std::ostringstream message;
+            message << "--target-cor = " << t << ": must be in (0, 1)";
+            throw std::invalid_argument(message.str());
+        }
+    }
+    if (!args.target_cor && (args.svg || args.fragment)) {
+        throw std::invalid_argument(
+            "--svg and --fragment show an identification: give --target-cor");
+    }
+}
+
+struct Rock {
+    std::string label;
+    engine::RockSpec spec;
+};
+
+std::string rock_label(const engine::RockRelease& release) {
+    if (!release.name.empty()) return release.name;
+    if (release.rock.shape) return "custom '" + release.rock.shape->name + "'";
+    return std::string(shapes::to_string(release.rock.kind));
+}
+
+engine::RockSpec spec_of(const scenario::ShapeResult& shape, double density) {
+    engine::RockSpec spec;
+    spec.size = shape.rock.nominal_size;
+    spec.density = density;
+    if (shape.rock.kind == shapes::RockKind::custom) {
+        spec.kind = shapes::RockKind::custom;
+        spec.shape = std::make_shared<const shapes::CustomShape>(
+            shapes::CustomShape{shape.label, shape.rock.hull});
+    } else {
+        spec.kind = shape.rock.kind;
+    }
+    return spec;
+}
+
+// The rocks to drop: every [[rocks]] entry of --scenario, or the rock (every entry of a
+// catalogue) the shape options describe, as `rockfall shape` reads them.
+std::vector<Rock> rocks_from_args(const DropArgs& args) {
+    const scenario::ShapeRequest& request = args.request;
+    std::vector<Rock> rocks;
+    if (args.scenario) {
+        if (request.file || request.kind || request.entry || request.size) {
+            throw std::invalid_argument(
+                "give the rock either as --scenario FILE (its [[rocks]]) or as FILE / --kind "
+                "with --entry and --size, not both");
+        }
+        const engine::Scenario scenario = scenario::load_scenario(*args.scenario).scenario;
+        for (const engine::RockRelease& release : scenario.rocks) {
+            rocks.push_back({rock_label(release), release.rock});
+        }
+        return rocks;
+    }
+    if (!request.file && !request.kind) {
+        throw std::invalid_argument(
+            "calibrate drop needs a rock: --kind K, a mesh FILE, a catalogue FILE [--entry NAME] "
+            "or --scenario FILE");
+    }
+    std::vector<scenario::ShapeResult> shapes;
+    if (request.file && scenario::is_catalogue(*request.file) && !request.entry && !request.kind) {
+        shapes = scenario::catalogue_shapes(request);
+    } else {
+        shapes.push_back(scenario::make_shape(request));
+    }
+    for (const scenario::ShapeResult& shape : shapes) {
+        rocks.push_back({shape.label, spec_of(shape, args.density)});
+    }
+    return rocks;
+}
+
+// The scenario rules for each rock (size, density, material, a custom kind with a hull).
+void validate_rocks(const std::vector<Rock>& rocks) {
+    for (const Rock& rock : rocks) {
+        engine::Scenario check;
+        check.rocks.front().rock = rock.spec;
+        try {
+            scenario::validate_scenario(check);
+        } catch (const scenario::ScenarioError& e) {
+            throw std::invalid_argument(rock.label + ": " + e.what());
+        }
+    }
+}
+
+void run(const DropArgs& args) {
+    check_args(args);
+    for (const std::optional<std::string>& path : {args.csv, args.svg, args.fragment}) {
+        if (path) output_target(*path);
+    }
+    const std::vector<Rock> rocks = rocks_from_args(args);
+    validate_rocks(rocks);
+    if (args.fragment && rocks.size() != 1) {
+        throw std::invalid_argument(
+            "--fragment holds one shape's material: " + std::to_string(rocks.size()) +
+            " rocks given (pick one with --entry NAME)");
+    }
+    DropReport report;
+    report.definition =
+        args.cor_from == "speed" ? risk::CorDefinition::speed : risk::CorDefinition::height;
+    report.threads = args.threads > 0
+                         ? args.threads
+                         : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    risk::IdentificationOptions options;
+    options.definition = report.definition;
+    options.curve_points = args.curve_points;
+    options.threads = report.threads;
+
+    const std::int64_t per_rock =
+        args.count * (1 + (args.target_cor ? options.curve_points + options.max_iterations : 0));
+    Progress progress(std::cerr, progress_mode_for_stderr(args.quiet || args.json),
+                      per_rock * static_cast<std::int64_t>(rocks.size()), "drops");
+    // The plan counts every refinement step an identification may take; it usually stops
+    // earlier, so the bar ends at the drops actually run.
+    std::int64_t offset = 0;
+    std::int64_t last = 0;
+    const auto show = [&](std::int64_t done, std::int64_t) {
+        last = done;
+        progress.update(offset + done);
+    };
+    const auto start = std::chrono::steady_clock::now();
+    for (const Rock& rock : rocks) {
+        DropShapeRun run;
+        run.label = rock.label;
+        run.spec.rock = rock.spec;
+        run.spec.surface = args.surface;
+        run.spec.height = args.height;
+        run.spec.count = args.count;
+        run.spec.seed = args.seed;
+        run.spec.time_step = args.time_step;
+        run.sphericity = rock.spec.geometry().sphericity;
+        run.result = risk::run_drop_test(run.spec, report.threads, show);
+        offset += args.count;
+        if (args.target_cor) {
+            last = 0;
+            run.identification =
+                risk::identify_surface_restitution(run.spec, *args.target_cor, options, show);
+            offset += last;
+        }
+        report.shapes.push_back(std::move(run));
+    }
+    progress.finish(offset,
+                    args.target_cor ? "(identification needed fewer steps than planned)" : "");
+    report.runtime =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    if (args.csv) {
+        OutputFile file(*args.csv);
+        write_drop_csv(file.stream(), report);
+        file.commit();
+    }
+    if (args.svg) write_svg(*args.svg, drop_figure(report));
+    if (args.fragment) {
+        OutputFile file(*args.fragment);
+        file.stream() << drop_fragment(report.shapes.front(), report.definition);
+        file.commit();
+    }
+    if (args.json) {
+        std::cout << drop_json(report).dump(2) << '\n';
+        return;
+    }
+    print_drop_text(std::cout, report);
+    if (args.csv) std::cout << "drops written to " << *args.csv << '\n';
+    if (args.svg) std::cout << "figure written to " << *args.svg << '\n';
+    if (args.fragment) std::cout << "scenario fragment written to " << *args.fragment << '\n';
+}
+
+void register_drop(CLI::App& calibrate) {
+    auto args = std::make_shared<DropArgs>();
+    CLI::App* cmd = calibrate.add_subcommand(
+        "drop",
+        "Drop test (seed 001): a rock dropped in many random orientations onto a surface; the "
+        "kinematic, kinetic and energetic coefficients of restitution of its first bounce; with "
+        "--target-cor the surface restitution that reproduces a measured mean COR");
+    std::string kinds;
+    for (const std::string& name : scenario::shape_kind_names())
+        kinds += (kinds.empty() ? "" : ", ") + name;
+    cmd->add_option("FILE", args->request.file,
+                    "Mesh file, or a catalogue (every entry is dropped unless --entry)");
+    cmd->add_option("--kind", args->request.kind, "Shape: " + kinds)
+        ->check(CLI::IsMember(scenario::shape_kind_names()));
+    cmd->add_option("--entry", args->request.entry, "Catalogue entry");
+    cmd->add_option("--size", args->request.size,
+                    "Volume-equivalent diameter (m), in [0.01, 10]; default 0.2, a mesh or "
+                    "catalogue entry keeps its own");
+    cmd->add_option("--scale", args->request.scale, "Mesh units to m (mm: 0.001)");
+    cmd->add_option("--scenario", args->scenario,
+                    "Scenario file: every [[rocks]] entry (shape, size, density, material) is "
+                    "dropped");
+    cmd->add_option("--density", args->density, "Rock density (kg/m3), in [500, 10000]")
+        ->capture_default_str();
+    cmd->add_option("--height", args->height,
+                    "Drop height (m) of the rock's lowest point above the surface, > 0")
+        ->capture_default_str();
+    cmd->add_option("--count", args->count, "Drops (random orientations), >= 1")
+        ->capture_default_str()
+        ->transform(integer_in(1, 10000000, "a drop count"));
+    cmd->add_option("--seed", args->seed, "Base seed of the orientations")->capture_default_str();
+    cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
+        ->capture_default_str()
+        ->transform(integer_in(0, 1024, "a thread count"));
+    cmd->add_option("--friction", args->surface.friction, "Surface friction, in [0, 2]")
+        ->capture_default_str();
+    cmd->add_option("--restitution", args->surface.restitution,
+                    "Surface restitution, in [0, 1] (the contact uses the mean with the rock's)")
+        ->capture_default_str();
+    cmd->add_option("--rolling-resistance", args->surface.rolling_resistance,
+                    "Surface rolling resistance, in [0, 1]")
+        ->capture_default_str();
+    cmd->add_option("--time-step", args->time_step, "Time step (s), in [1e-5, 1e-2]")
+        ->capture_default_str();
+    cmd->add_option("--target-cor", args->target_cor,
+                    "Measured mean kinematic COR, in (0, 1): identify the surface restitution "
+                    "that reproduces it, with the curve COR against restitution");
+    cmd->add_option("--cor-from", args->cor_from,
+                    "Which kinematic COR the target is: height (sqrt(H_r/H_i), as measured) or "
+                    "speed (v_out/v_in)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"height", "speed"}));
+    cmd->add_option("--curve-points", args->curve_points,
+                    "Points of the curve over surface restitution [0, 1], >= 2")
+        ->capture_default_str()
+        ->transform(integer_in(2, 101, "a number of curve points"));
+    cmd->add_option("--svg", args->svg, "Write the curve (the paper's Fig. 11) as SVG");
+    cmd->add_option("--csv", args->csv, "Write every drop's measurements as CSV");
+    cmd->add_option("--fragment", args->fragment,
+                    "Write the identified [materials.slope] as a scenario fragment (TOML) for "
+                    "extends");
+    cmd->add_flag("--json", args->json, "Print one JSON document instead of the summary");
+    cmd->add_flag("--quiet", args->quiet, "No progress display");
+    cmd->callback([args] { run(*args); });
+}
+
+}  // namespace
+
+void register_calibrate(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand(
+        "calibrate",
+        "Virtual calibration experiments (seed 001) and identification of contact "
+        "parameters from measured results");
+    cmd->require_subcommand(1);
+    register_drop(*cmd);
+}
+
+}  // namespace rockfall::app
