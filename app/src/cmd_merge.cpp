@@ -198,16 +198,15 @@ int run_merge(const MergeArgs& args) {
     for (const ShardFile& file : files) paths.push_back(file.path);
     db::merge_runs(args.out, merged_record(files, missing == 0), paths);
 
+    if (args.quiet) return 0;
     const std::int64_t merged = files.front().run.samples_planned - missing;
-    if (!args.quiet) {
-        std::cerr << "merged " << files.size() << " file" << (files.size() == 1 ? "" : "s") << " ("
-                  << merged << " of " << present.size() << " samples) into " << args.out << ": ";
-        if (missing == 0) {
-            std::cerr << "complete\n";
-        } else {
-            std::cerr << missing << " samples missing; run them with `rockfall sweep --db "
-                      << args.out << " --resume`\n";
-        }
+    std::cerr << "merged " << files.size() << " file" << (files.size() == 1 ? "" : "s") << " ("
+              << merged << " of " << present.size() << " samples) into " << args.out << ": ";
+    if (missing == 0) {
+        std::cerr << "complete\n";
+    } else {
+        std::cerr << missing << " samples missing; run them with `rockfall sweep --db " << args.out
+                  << " --resume`\n";
     }
     const db::ResultsDb results = db::ResultsDb::open(args.out, false);
     report::write_summary(std::cout, report::QueryFormat::text, args.out, db::summarize(results));
@@ -227,7 +226,9 @@ void register_merge(CLI::App& app) {
     cmd->add_flag("--allow-gaps", args->allow_gaps,
                   "Merge even when samples are missing; the result's status is interrupted and "
                   "`rockfall sweep --db OUT --resume` runs the rest");
-    cmd->add_flag("--quiet", args->quiet, "No note on stderr");
+    cmd->add_flag("--quiet", args->quiet,
+                  "Print nothing: no note on stderr, no summary of the merged run (which reads "
+                  "every sample)");
     cmd->callback([args] {
         const int code = run_merge(*args);
         if (code != 0) throw CLI::RuntimeError(code);

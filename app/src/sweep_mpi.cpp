@@ -103,8 +103,10 @@ class OwnerSource final : public SampleSource {
         if (stopping_) return;
         stopping_ = true;
         local_.stop();
+        // Not to a rank that said it is done: it is in MPI_Finalize and would not receive it.
         for (int rank = 1; rank <= others_; ++rank)
-            check(MPI_Send(nullptr, 0, MPI_BYTE, rank, stop_tag, MPI_COMM_WORLD), "send");
+            if (!done_by_rank_[static_cast<std::size_t>(rank)])
+                check(MPI_Send(nullptr, 0, MPI_BYTE, rank, stop_tag, MPI_COMM_WORLD), "send");
     }
 
     bool finished() const override { return local_.finished() && done_ == others_; }
@@ -153,6 +155,7 @@ class OwnerSource final : public SampleSource {
                 }
                 case done:
                     receive_bytes(*status);
+                    done_by_rank_[static_cast<std::size_t>(status->MPI_SOURCE)] = true;
                     if (++done_ == others_) *others_done_ = true;
                     break;
                 default:
@@ -172,6 +175,7 @@ class OwnerSource final : public SampleSource {
     std::atomic<int>& interrupt_;
     const int others_;
     int done_ = 0;
+    std::vector<bool> done_by_rank_ = std::vector<bool>(static_cast<std::size_t>(others_) + 1);
     std::shared_ptr<bool> others_done_;
 };
 
