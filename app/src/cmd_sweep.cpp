@@ -285,7 +285,10 @@ int sweep_as_owner(SweepArgs& args, mpi::Session* session) {
             ": the stop rule is checked on the completed prefix of the whole run, which no "
             "shard holds; give the shards a fixed --samples and merge them (rockfall merge), or "
             "run one sweep over MPI ranks with --until (docs/cluster.md)");
-    const int threads = thread_count(args);
+    // Rank 0 of several leaves one core of its node to receiving and writing the others'
+    // samples when the thread count is left to it (docs/cluster.md).
+    const int threads =
+        session && args.threads == 0 ? std::max(1, thread_count(args) - 1) : thread_count(args);
     const std::string stop_rule =
         until ? until->describe() + ", at most " + std::to_string(spec.samples) + " samples"
               : std::to_string(spec.samples) + " samples";
@@ -344,7 +347,8 @@ int sweep_as_owner(SweepArgs& args, mpi::Session* session) {
                           : std::string())
                   << ", " << risk::to_string(spec.method) << ", seed " << spec.seed << ", "
                   << threads << " thread" << (threads == 1 ? "" : "s")
-                  << (session ? " x " + std::to_string(session->size()) + " MPI ranks" : "")
+                  << (session ? " on rank 0 of " + std::to_string(session->size()) + " MPI ranks"
+                              : "")
                   << " -> " << args.db << '\n';
         if (!stored.empty())
             std::cerr << "resuming: " << stored.size() << " samples stored, " << pending.size()
