@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <sched.h>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -211,9 +212,15 @@ scenario::ScenarioFile sweep_scenario(const SweepArgs& args, const db::RunRecord
     return scenario::parse_scenario_file(run->scenario_text, args.db + " (stored scenario)");
 }
 
+// --threads, or for 0 the cores this process may run on: its CPU affinity, which a scheduler's
+// allocation (Slurm's cgroups, mpirun's binding) narrows, rather than all of the node's.
 int thread_count(const SweepArgs& args) {
-    return args.threads > 0 ? args.threads
-                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    if (args.threads > 0) return args.threads;
+    cpu_set_t allowed;
+    CPU_ZERO(&allowed);
+    if (sched_getaffinity(0, sizeof allowed, &allowed) == 0)
+        return std::max(1, CPU_COUNT(&allowed));
+    return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
 // The samples of this process's threads.
