@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <sched.h>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -211,9 +212,15 @@ scenario::ScenarioFile sweep_scenario(const SweepArgs& args, const db::RunRecord
     return scenario::parse_scenario_file(run->scenario_text, args.db + " (stored scenario)");
 }
 
+// --threads, or for 0 the cores this process may run on: its CPU affinity, which a scheduler's
+// allocation (Slurm's cgroups, mpirun's binding) narrows, rather than all of the node's.
 int thread_count(const SweepArgs& args) {
-    return args.threads > 0 ? args.threads
-                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    if (args.threads > 0) return args.threads;
+    cpu_set_t allowed;
+    CPU_ZERO(&allowed);
+    if (sched_getaffinity(0, sizeof allowed, &allowed) == 0)
+        return std::max(1, CPU_COUNT(&allowed));
+    return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
 // The samples of this process's threads.
@@ -285,7 +292,10 @@ int sweep_as_owner(SweepArgs& args, mpi::Session* session) {
             ": the stop rule is checked on the completed prefix of the whole run, which no "
             "shard holds; give the shards a fixed --samples and merge them (rockfall merge), or "
             "run one sweep over MPI ranks with --until (docs/cluster.md)");
-    const int threads = thread_count(args);
+    // Rank 0 of several leaves one core of its node to receiving and writing the others'
+    // samples when the thread count is left to it (docs/cluster.md).
+    const int threads =
+        session && args.threads == 0 ? std::max(1, thread_count(args) - 1) : thread_count(args);
     const std::string stop_rule =
         until ? until->describe() + ", at most " + std::to_string(spec.samples) + " samples"
               : std::to_string(spec.samples) + " samples";
@@ -344,7 +354,8 @@ int sweep_as_owner(SweepArgs& args, mpi::Session* session) {
                           : std::string())
                   << ", " << risk::to_string(spec.method) << ", seed " << spec.seed << ", "
                   << threads << " thread" << (threads == 1 ? "" : "s")
-                  << (session ? " x " + std::to_string(session->size()) + " MPI ranks" : "")
+                  << (session ? " on rank 0 of " + std::to_string(session->size()) + " MPI ranks"
+                              : "")
                   << " -> " << args.db << '\n';
         if (!stored.empty())
             std::cerr << "resuming: " << stored.size() << " samples stored, " << pending.size()

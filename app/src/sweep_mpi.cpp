@@ -2,16 +2,13 @@
 
 #include "db/sample_codec.hpp"
 
-// The C API only: Open MPI's and MPICH's mpi.h otherwise pull in the deprecated C++ bindings,
-// which need a library FindMPI's C component does not link.
-#define OMPI_SKIP_MPICXX 1
-#define MPICH_SKIP_MPICXX 1
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <mpi.h>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 
 namespace rockfall::app::mpi {
@@ -96,6 +93,9 @@ class OwnerSource final : public SampleSource {
                 collected.push_back(std::move(result));
             if (!collected.empty() || finished() || std::chrono::steady_clock::now() >= deadline)
                 return collected;
+            // This rank's threads are done (collect returned at once) and the others are not:
+            // wait a little rather than spin on MPI_Iprobe against the ranks sharing the node.
+            if (local_.finished()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
     }
 

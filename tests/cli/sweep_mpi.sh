@@ -20,7 +20,7 @@ mpi() { "$mpiexec" --allow-run-as-root --oversubscribe -np 3 "$@"; }
 case $mode in
 equal)
     out=$(mpi "$rockfall" sweep "$scenario" --db "$work/ranks.db" --threads 1 "$@" 2>&1)
-    grep -q "1 thread x 3 MPI ranks" <<<"$out" || fail "no MPI banner: $out"
+    grep -q "1 thread on rank 0 of 3 MPI ranks" <<<"$out" || fail "no MPI banner: $out"
     same_run "$work/one.db" "$work/ranks.db"
     echo "3 ranks equal one process: $(sqlite3 "$work/ranks.db" "SELECT count(*) FROM outcomes") rocks"
     set +e
