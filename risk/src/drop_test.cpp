@@ -219,24 +219,6 @@ DropMeasurement run_drop(const DropTestSpec& spec, std::int64_t index) {
     return m;
 }
 
-double student_t_quantile(double p, double dof) {
-    detail::require(p > 0.0 && p < 1.0, "p = " + std::to_string(p) + ": must be in (0, 1)");
-    detail::require_positive("dof", dof, "");
-    if (p < 0.5) return -student_t_quantile(1.0 - p, dof);
-    // P(T <= t) = 1 - I_{dof / (dof + t^2)}(dof / 2, 1 / 2) / 2 for t >= 0.
-    const auto cdf = [dof](double t) {
-        return 1.0 - 0.5 * regularized_incomplete_beta(dof / (dof + t * t), 0.5 * dof, 0.5);
-    };
-    double lo = 0.0;
-    double hi = 1.0;
-    while (cdf(hi) < p) hi *= 2.0;
-    while (hi - lo > 1e-12 * hi) {
-        const double mid = 0.5 * (lo + hi);
-        (cdf(mid) < p ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
-}
-
 SampleSummary sample_summary(const std::vector<double>& sample, double confidence) {
     detail::require(!sample.empty(), "distribution of an empty sample");
     detail::require(confidence > 0.0 && confidence < 1.0,

@@ -100,11 +100,6 @@ DropMeasurement measure_drop(const std::vector<engine::RockState>& states,
 /// measures it. Throws std::runtime_error when the engine reports a numerical failure.
 DropMeasurement run_drop(const DropTestSpec& spec, std::int64_t index);
 
-/// Two-sided Student t quantile: t with P(T <= t) = p for T of `dof` degrees of freedom
-/// (> 0), p in (0, 1), by bisection on the t distribution's CDF through the regularized
-/// incomplete beta function to 1e-12 relative.
-double student_t_quantile(double p, double dof);
-
 /// A sample's distribution: mean, spread, percentiles and a confidence interval of the mean.
 struct SampleSummary {
     /// Sample size.

@@ -20,6 +20,11 @@ struct Interval {
 /// to about 1e-15. Throws std::invalid_argument outside (0, 1).
 double normal_quantile(double p);
 
+/// Two-sided Student t quantile: t with P(T <= t) = p for T of `dof` degrees of freedom
+/// (> 0), p in (0, 1), by bisection on the t distribution's CDF through the regularized
+/// incomplete beta function to 1e-12 relative.
+double student_t_quantile(double p, double dof);
+
 /// Regularized incomplete beta function I_x(a, b) for x in [0, 1], a > 0, b > 0, from its
 /// continued fraction (DLMF 8.17.22) evaluated by the modified Lentz method. Relative error
 /// about 1e-15 (a + b): the log-gamma prefactor loses digits as a + b grows (measured 1e-13 at
