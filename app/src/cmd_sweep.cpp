@@ -9,6 +9,7 @@
 #include "scenario/scenario_file.hpp"
 #include "sweep_mpi.hpp"
 #include "sweep_record.hpp"
+#include "threads.hpp"
 
 #include "db/queries.hpp"
 #include "db/results_db.hpp"
@@ -22,7 +23,6 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <sched.h>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -212,17 +212,6 @@ scenario::ScenarioFile sweep_scenario(const SweepArgs& args, const db::RunRecord
     return scenario::parse_scenario_file(run->scenario_text, args.db + " (stored scenario)");
 }
 
-// --threads, or for 0 the cores this process may run on: its CPU affinity, which a scheduler's
-// allocation (Slurm's cgroups, mpirun's binding) narrows, rather than all of the node's.
-int thread_count(const SweepArgs& args) {
-    if (args.threads > 0) return args.threads;
-    cpu_set_t allowed;
-    CPU_ZERO(&allowed);
-    if (sched_getaffinity(0, sizeof allowed, &allowed) == 0)
-        return std::max(1, CPU_COUNT(&allowed));
-    return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
-
 // The samples of this process's threads.
 class LocalSource final : public SampleSource {
   public:
@@ -251,7 +240,7 @@ int serve_rank(mpi::Session& session, SweepArgs& args) {
     args.samples = setup->samples;
     args.method = setup->method;
     risk::RunnerOptions options;
-    options.threads = thread_count(args);
+    options.threads = thread_count(args.threads);
     options.trajectory_interval = setup->trajectory_interval;
     try {
         return session.serve(effective_spec(as_stored, args), as_stored.scenario, options,
@@ -294,8 +283,8 @@ int sweep_as_owner(SweepArgs& args, mpi::Session* session) {
             "run one sweep over MPI ranks with --until (docs/cluster.md)");
     // Rank 0 of several leaves one core of its node to receiving and writing the others'
     // samples when the thread count is left to it (docs/cluster.md).
-    const int threads =
-        session && args.threads == 0 ? std::max(1, thread_count(args) - 1) : thread_count(args);
+    const int threads = session && args.threads == 0 ? std::max(1, thread_count(args.threads) - 1)
+                                                     : thread_count(args.threads);
     const std::string stop_rule =
         until ? until->describe() + ", at most " + std::to_string(spec.samples) + " samples"
               : std::to_string(spec.samples) + " samples";

@@ -48,6 +48,8 @@ void register_sweep(CLI::App& app);
 
 /// `rockfall calibrate drop`: virtual drop tests and the surface restitution for a measured COR.
 void register_calibrate(CLI::App& app);
+/// `rockfall validate`: published results reproduced (seed 001's Table 2 and speeds).
+void register_validate(CLI::App& app);
 /// `rockfall merge OUT.db SHARD.db...`: shards of one sweep into one database.
 void register_merge(CLI::App& app);
 

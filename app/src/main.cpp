@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
     rockfall::app::register_terrain(app);
     rockfall::app::register_query(app);
     rockfall::app::register_calibrate(app);
+    rockfall::app::register_validate(app);
     rockfall::app::check_seed_options(app);
     // CLI11 reads an unknown first word as a stray positional and answers "A subcommand is
     // required"; name what was typed and list the commands instead.

@@ -6,6 +6,7 @@
 
 #include "engine/outcome.hpp"
 #include "engine/scenario.hpp"
+#include "risk/parallel.hpp"
 #include "risk/statistics.hpp"
 #include "shapes/rocks.hpp"
 
@@ -138,7 +139,7 @@ struct DropTestResult {
 };
 
 /// Called on the calling thread with drops done and drops planned (the plan may grow).
-using DropProgress = std::function<void(std::int64_t done, std::int64_t total)>;
+using DropProgress = ParallelProgress;
 
 /// Runs the `spec.count` drops of a checked spec on `threads` (>= 1) worker threads; drop i's
 /// result depends only on (spec, i), whatever the thread count.
