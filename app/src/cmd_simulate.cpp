@@ -136,19 +136,25 @@ class TrajectoryCsv {
     std::vector<long> next_;
 };
 
+/// Creates the directory of `option` with its parents; throws naming the option and the path
+/// when it cannot (a file there, no permission).
+void create_output_directory(const char* option, const fs::path& dir) {
+    std::error_code error;
+    fs::create_directories(dir, error);
+    if (error || !fs::is_directory(dir)) {
+        throw std::invalid_argument(std::string(option) + " " + dir.string() +
+                                    ": cannot create the directory (" +
+                                    (error ? error.message() : "not a directory") + ")");
+    }
+}
+
 /// The ParaView series of a run in a directory: static.vtp (the static geometry),
 /// rocks_NNNNN.vtp (the rocks at each frame) and rocks.pvd (the frames with their times),
 /// each written by the output-file rule after the run, the .pvd last.
 class VtkSeries {
   public:
     VtkSeries(fs::path dir, double interval) : dir_(std::move(dir)), frames_(interval) {
-        std::error_code error;
-        fs::create_directories(dir_, error);
-        if (error || !fs::is_directory(dir_)) {
-            throw std::invalid_argument("--vtk " + dir_.string() +
-                                        ": cannot create the directory (" +
-                                        (error ? error.message() : "not a directory") + ")");
-        }
+        create_output_directory("--vtk", dir_);
         // A path in it that may not be written (a directory named rocks.pvd) is refused now.
         output_target(dir_ / "rocks.pvd");
         output_target(dir_ / "static.vtp");
@@ -189,13 +195,7 @@ class VtkSeries {
 class FigureDir {
   public:
     explicit FigureDir(fs::path dir) : dir_(std::move(dir)) {
-        std::error_code error;
-        fs::create_directories(dir_, error);
-        if (error || !fs::is_directory(dir_)) {
-            throw std::invalid_argument("--figures " + dir_.string() +
-                                        ": cannot create the directory (" +
-                                        (error ? error.message() : "not a directory") + ")");
-        }
+        create_output_directory("--figures", dir_);
         for (const char* name :
              {"pressure_peak.svg", "pressure_at_peak.svg", "wall_force.svg", "marked_speeds.svg"}) {
             output_target(dir_ / name);

@@ -40,11 +40,11 @@ constexpr std::array<std::array<double, 3>, 16> viridis_anchors{{
     {0.993248, 0.906157, 0.143936},
 }};
 
-// Layout, px: as svg_plot's margins for the title and axis labels; the colour bar right of the
-// map; the legend rows below the x label.
-constexpr double margin_left = 84.0;
-constexpr double margin_top = 48.0;
-constexpr double margin_bottom = 64.0;
+using svg_detail::margin_bottom;
+using svg_detail::margin_left;
+using svg_detail::margin_top;
+
+// Layout, px: the colour bar right of the map; the legend rows below the x label.
 constexpr double bar_gap = 30.0;
 constexpr double bar_width = 22.0;
 constexpr double legend_row = 22.0;

@@ -13,6 +13,11 @@ namespace rockfall::report::svg_detail {
 
 /// Font size of tick labels, px.
 inline constexpr double font_size = 13.0;
+/// Margins of the plot area, px: room for the y tick and axis labels on the left, the title
+/// above, the x tick and axis labels below (write_axes draws them there).
+inline constexpr double margin_left = 84.0;
+inline constexpr double margin_top = 48.0;
+inline constexpr double margin_bottom = 64.0;
 
 /// A coordinate or length for an SVG attribute: two decimals.
 std::string num(double value);

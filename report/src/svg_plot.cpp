@@ -114,11 +114,12 @@ using svg_detail::Frame;
 using svg_detail::num;
 using svg_detail::write_axes;
 
-// Layout, px: room for the title above, tick labels and axis labels left and below.
-constexpr double margin_left = 84.0;
+using svg_detail::margin_bottom;
+using svg_detail::margin_left;
+using svg_detail::margin_top;
+
+// Layout, px: the right margin, the legend.
 constexpr double margin_right = 24.0;
-constexpr double margin_top = 48.0;
-constexpr double margin_bottom = 64.0;
 // Average advance of a sans-serif character at font_size, to size the legend box.
 constexpr double char_width = 6.2;
 constexpr double legend_sample = 30.0;
