@@ -1,8 +1,9 @@
-// `rockfall simulate`: one release of a scenario, summary or JSON, optional trajectory CSV and
-// ParaView series.
+// `rockfall simulate`: one release of a scenario, summary or JSON, optional trajectory CSV,
+// ParaView series and SVG figures.
 
 #include "commands.hpp"
 #include "output_file.hpp"
+#include "report/run_figures.hpp"
 #include "report/simulation_report.hpp"
 #include "report/vtk_output.hpp"
 #include "scenario/scenario_file.hpp"
@@ -42,6 +43,8 @@ struct SimulateArgs {
     bool all_rocks = false;
     std::string vtk_dir;
     double vtk_interval = 0.02;
+    std::string figures_dir;
+    double camera_interval = report::default_camera_interval;
 };
 
 /// What to run: a scenario file, or one sample of a sweep database.
@@ -133,19 +136,25 @@ class TrajectoryCsv {
     std::vector<long> next_;
 };
 
+/// Creates the directory of `option` with its parents; throws naming the option and the path
+/// when it cannot (a file there, no permission).
+void create_output_directory(const char* option, const fs::path& dir) {
+    std::error_code error;
+    fs::create_directories(dir, error);
+    if (error || !fs::is_directory(dir)) {
+        throw std::invalid_argument(std::string(option) + " " + dir.string() +
+                                    ": cannot create the directory (" +
+                                    (error ? error.message() : "not a directory") + ")");
+    }
+}
+
 /// The ParaView series of a run in a directory: static.vtp (the static geometry),
 /// rocks_NNNNN.vtp (the rocks at each frame) and rocks.pvd (the frames with their times),
 /// each written by the output-file rule after the run, the .pvd last.
 class VtkSeries {
   public:
     VtkSeries(fs::path dir, double interval) : dir_(std::move(dir)), frames_(interval) {
-        std::error_code error;
-        fs::create_directories(dir_, error);
-        if (error || !fs::is_directory(dir_)) {
-            throw std::invalid_argument("--vtk " + dir_.string() +
-                                        ": cannot create the directory (" +
-                                        (error ? error.message() : "not a directory") + ")");
-        }
+        create_output_directory("--vtk", dir_);
         // A path in it that may not be written (a directory named rocks.pvd) is refused now.
         output_target(dir_ / "rocks.pvd");
         output_target(dir_ / "static.vtp");
@@ -181,6 +190,49 @@ class VtkSeries {
     engine::RunGeometry geometry_;
 };
 
+/// The figures directory of --figures: created (with its parents) and its files' paths checked
+/// before the run, the figures the run has data for written after it.
+class FigureDir {
+  public:
+    explicit FigureDir(fs::path dir) : dir_(std::move(dir)) {
+        create_output_directory("--figures", dir_);
+        for (const char* name :
+             {"pressure_peak.svg", "pressure_at_peak.svg", "wall_force.svg", "marked_speeds.svg"}) {
+            output_target(dir_ / name);
+        }
+    }
+    /// Writes every figure; returns them (file names and descriptions).
+    std::vector<report::Figure> write(const engine::Scenario& scenario,
+                                      const engine::Outcome& outcome,
+                                      const report::RunSeries& series) const {
+        std::vector<report::Figure> figures = report::run_figures(scenario, outcome, series);
+        for (const report::Figure& figure : figures) {
+            OutputFile file(dir_ / figure.file);
+            file.stream() << figure.svg;
+            file.commit();
+        }
+        return figures;
+    }
+    const fs::path& path() const { return dir_; }
+
+  private:
+    fs::path dir_;
+};
+
+void print_figures(const FigureDir& dir, const std::vector<report::Figure>& figures) {
+    if (figures.empty()) {
+        std::cout << "no figures written to " << dir.path().string()
+                  << ": the run has no wall hit, no named (marked) rock and no loaded "
+                     "[wall_cells]\n";
+        return;
+    }
+    std::cout << figures.size() << (figures.size() == 1 ? " figure" : " figures") << " written to "
+              << dir.path().string() << ":\n";
+    for (const report::Figure& f : figures) {
+        std::cout << "  " << f.file << ": " << f.description << '\n';
+    }
+}
+
 // The rocks a scenario will have, when known before the run (a cluster given by volume draws
 // its count); 0 when not.
 std::size_t known_rock_count(const engine::Scenario& scenario) {
@@ -210,6 +262,10 @@ void run_simulate(const SimulateArgs& args) {
     options.trajectory_interval = args.trajectory_interval;
     if (!args.vtk_dir.empty())
         options.trajectory_interval = std::min(args.trajectory_interval, args.vtk_interval);
+    // Camera frames fall on samples (marked rocks' speeds between frames).
+    options.trajectory_interval = std::min(options.trajectory_interval, args.camera_interval);
+    std::unique_ptr<FigureDir> figure_dir;
+    if (!args.figures_dir.empty()) figure_dir = std::make_unique<FigureDir>(args.figures_dir);
     std::unique_ptr<VtkSeries> vtk;
     if (!args.vtk_dir.empty()) {
         vtk = std::make_unique<VtkSeries>(args.vtk_dir, args.vtk_interval);
@@ -234,15 +290,25 @@ void run_simulate(const SimulateArgs& args) {
     const std::size_t vtk_frames = vtk ? vtk->write(job.scenario) : 0;
 
     report::RockDetail detail{args.all_rocks, rock_indices(args.rocks, outcome.rocks.size())};
-    report::RunSeries run_series{series.series(), {}};
+    report::RunSeries run_series{series.series(), {}, args.camera_interval};
     if (outcome.rocks.size() > 1)
         run_series.front = report::cluster_front(job.scenario, run_series.rocks, outcome);
     const report::RunInfo info{job.source, job.seed, elapsed.count()};
     // A replay must reproduce the stored outcome bit for bit (same binary); say so either way.
     const bool replay_matches = !job.stored || same_as_stored(*job.stored, outcome);
+    const std::vector<report::Figure> figures =
+        figure_dir ? figure_dir->write(job.scenario, outcome, run_series)
+                   : std::vector<report::Figure>{};
     if (args.json) {
         nlohmann::json json = report::outcome_json(job.scenario, outcome, info, run_series);
         if (job.stored) json["replay_matches_database"] = replay_matches;
+        if (figure_dir) {
+            nlohmann::json files = nlohmann::json::array();
+            for (const report::Figure& f : figures) {
+                files.push_back((figure_dir->path() / f.file).string());
+            }
+            json["figures_written"] = files;
+        }
         std::cout << json.dump(2) << '\n';
     } else {
         report::print_summary(std::cout, job.scenario, outcome, info, run_series, detail);
@@ -256,6 +322,7 @@ void run_simulate(const SimulateArgs& args) {
         if (vtk)
             std::cout << vtk_frames << " VTK frames written to " << args.vtk_dir
                       << " (open rocks.pvd and static.vtp in ParaView)\n";
+        if (figure_dir) print_figures(*figure_dir, figures);
     }
 }
 
@@ -291,6 +358,15 @@ void register_simulate(CLI::App& app) {
                     "each frame) and static.vtp (slope, walls, lining)");
     cmd->add_option("--vtk-interval", args->vtk_interval, "Time between VTK frames, s")
         ->check(CLI::Range(1e-4, 10.0))
+        ->capture_default_str();
+    cmd->add_option("--figures", args->figures_dir,
+                    "Write SVG figures to this directory (created): pressure_peak.svg and "
+                    "pressure_at_peak.svg (with [wall_cells]), wall_force.svg (with wall hits), "
+                    "marked_speeds.svg (with named rocks)");
+    cmd->add_option("--camera-interval", args->camera_interval,
+                    "Frame interval of the camera that tracks the named (marked) rocks, s "
+                    "(seed 001: 0.04)")
+        ->check(CLI::Range(1e-4, 1.0))
         ->capture_default_str();
     cmd->callback([args] { run_simulate(*args); });
 }

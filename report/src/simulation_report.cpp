@@ -1,5 +1,6 @@
 #include "report/simulation_report.hpp"
 
+#include "report/marked_rocks.hpp"
 #include "report/pressure_report.hpp"
 #include "report/text_format.hpp"
 
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace rockfall::report {
@@ -220,11 +222,13 @@ void print_summary(std::ostream& out, const engine::Scenario& scenario,
             << " rocks in the table only (--rock N prints rock N in full, --all-rocks every one)\n";
     }
     if (several) print_front(out, scenario, series.front);
+    std::optional<engine::PressureMap> cells;
     if (scenario.wall_cells) {
-        const shapes::Slope slope(scenario.slope);
-        print_pressure_cells(out, engine::pressure_map(*scenario.wall_cells, slope, outcome),
-                             outcome);
+        cells = engine::pressure_map(*scenario.wall_cells, shapes::Slope(scenario.slope), outcome);
+        print_pressure_cells(out, *cells, outcome);
     }
+    print_marked_rocks(out, marked_rocks(outcome, series.rocks, cells ? &*cells : nullptr,
+                                         series.camera_interval));
     const bool per_rock = scenario.numerics.wall_stepping == engine::WallStepping::per_rock;
     out << "simulated " << fmt("%.3f s", outcome.simulated_time) << " in " << outcome.coarse_steps
         << " coarse + " << outcome.fine_steps
@@ -300,15 +304,19 @@ nlohmann::json outcome_json(const engine::Scenario& scenario, const engine::Outc
         entry["distance_travelled_m"] = s ? nlohmann::json(s->distance()) : nullptr;
         entry["speed_by_distance"] = distance_json(s);
     }
+    std::optional<engine::PressureMap> map;
     nlohmann::json cells = nullptr;
     if (scenario.wall_cells) {
-        const shapes::Slope slope(scenario.slope);
-        cells = pressure_cells_json(engine::pressure_map(*scenario.wall_cells, slope, outcome),
-                                    outcome);
+        map = engine::pressure_map(*scenario.wall_cells, shapes::Slope(scenario.slope), outcome);
+        cells = pressure_cells_json(*map, outcome);
     }
+    const MarkedRocks marked =
+        marked_rocks(outcome, series.rocks, map ? &*map : nullptr, series.camera_interval);
     return {{"scenario", scenario.name},
             {"scenario_file", info.scenario_path},
             {"pressure_cells", cells},
+            {"marked_rocks",
+             marked.rocks.empty() ? nlohmann::json(nullptr) : marked_rocks_json(marked)},
             {"seed", info.seed},
             {"runtime_s", info.runtime},
             {"simulated_time_s", outcome.simulated_time},

@@ -2,6 +2,8 @@
 
 #include "report/svg_plot.hpp"
 
+#include "svg_detail.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,27 +12,7 @@
 #include <stdexcept>
 
 namespace rockfall::report {
-namespace {
-
-// Layout, px: room for the title above, tick labels and axis labels left and below.
-constexpr double margin_left = 84.0;
-constexpr double margin_right = 24.0;
-constexpr double margin_top = 48.0;
-constexpr double margin_bottom = 64.0;
-constexpr double font_size = 13.0;
-// Average advance of a sans-serif character at font_size, to size the legend box.
-constexpr double char_width = 6.2;
-constexpr double legend_sample = 30.0;
-constexpr double legend_row = 20.0;
-constexpr double legend_pad = 10.0;
-constexpr double max_legend_width = 420.0;
-
-// Heckbert (1990): the "nice" number nearest x (> 0), 1, 2, 5 or 10 times a power of ten.
-double nice_number(double x) {
-    const double power = std::pow(10.0, std::floor(std::log10(x)));
-    const double f = x / power;
-    return (f < 1.5 ? 1.0 : f < 3.0 ? 2.0 : f < 7.0 ? 5.0 : 10.0) * power;
-}
+namespace svg_detail {
 
 std::string num(double value) {
     char buffer[32];
@@ -61,79 +43,11 @@ std::string escaped(const std::string& text) {
     return out;
 }
 
-bool has_legend(const Plot& plot) {
-    return std::any_of(plot.series.begin(), plot.series.end(),
-                       [](const Series& s) { return !s.label.empty(); });
-}
-
-double legend_width(const Plot& plot) {
-    std::size_t longest = 0;
-    for (const Series& s : plot.series) longest = std::max(longest, s.label.size());
-    const double width = 3.0 * legend_pad + legend_sample + char_width * double(longest);
-    return std::min(width, max_legend_width);
-}
-
-void check_series(const Series& s) {
-    if (s.x.size() != s.y.size()) {
-        throw std::invalid_argument("plot series \"" + s.label +
-                                    "\": " + std::to_string(s.x.size()) + " x values but " +
-                                    std::to_string(s.y.size()) + " y values");
-    }
-    for (std::size_t i = 0; i < s.x.size(); ++i) {
-        if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
-            throw std::invalid_argument("plot series \"" + s.label + "\": point " +
-                                        std::to_string(i) + " is not finite");
-        }
-    }
-}
-
-// Maps data coordinates to the drawing.
-struct Frame {
-    PlotArea area;
-    Ticks x;
-    Ticks y;
-    double px(double value) const {
-        return area.left + (value - x.lower) / (x.upper - x.lower) * (area.right - area.left);
-    }
-    double py(double value) const {
-        return area.bottom - (value - y.lower) / (y.upper - y.lower) * (area.bottom - area.top);
-    }
-};
-
-void write_marker(std::ostream& out, Marker marker, double cx, double cy, double size,
-                  const std::string& color, double opacity) {
-    const std::string style = " fill=\"" + color + "\" fill-opacity=\"" + num(opacity * 0.85) +
-                              "\" stroke=\"" + color + "\" stroke-opacity=\"" + num(opacity) + "\"";
-    switch (marker) {
-        case Marker::none:
-            return;
-        case Marker::circle:
-            out << "<circle cx=\"" << num(cx) << "\" cy=\"" << num(cy) << "\" r=\"" << num(size)
-                << '"' << style << "/>\n";
-            return;
-        case Marker::square:
-            out << "<rect x=\"" << num(cx - size) << "\" y=\"" << num(cy - size) << "\" width=\""
-                << num(2 * size) << "\" height=\"" << num(2 * size) << '"' << style << "/>\n";
-            return;
-        case Marker::triangle:
-            out << "<polygon points=\"" << num(cx) << ',' << num(cy - 1.2 * size) << ' '
-                << num(cx - 1.04 * size) << ',' << num(cy + 0.6 * size) << ' '
-                << num(cx + 1.04 * size) << ',' << num(cy + 0.6 * size) << '"' << style << "/>\n";
-            return;
-    }
-}
-
-void write_line(std::ostream& out, const std::vector<std::pair<double, double>>& points,
-                const Series& s) {
-    out << "<polyline fill=\"none\" stroke=\"" << s.color << "\" stroke-width=\""
-        << num(s.line_width) << "\" stroke-opacity=\"" << num(s.opacity)
-        << "\" stroke-linejoin=\"round\"";
-    if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << '"';
-    out << " points=\"";
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        out << (i ? " " : "") << num(points[i].first) << ',' << num(points[i].second);
-    }
-    out << "\"/>\n";
+std::string svg_open(double width, double height) {
+    return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(width) + "\" height=\"" +
+           num(height) + "\" viewBox=\"0 0 " + num(width) + ' ' + num(height) +
+           "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n"
+           "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
 }
 
 void write_axes(std::ostream& out, const Frame& f, const Plot& plot) {
@@ -171,9 +85,115 @@ void write_axes(std::ostream& out, const Frame& f, const Plot& plot) {
         << "\" text-anchor=\"middle\" font-size=\"" << num(font_size + 1)
         << "\" transform=\"rotate(-90 " << num(a.left - 62) << ' ' << num(mid_y) << ")\">"
         << escaped(plot.y_label) << "</text>\n";
-    out << "<text x=\"" << num(mid_x) << "\" y=\"" << num(margin_top - 18)
+    out << "<text x=\"" << num(mid_x) << "\" y=\"" << num(a.top - 18)
         << "\" text-anchor=\"middle\" font-size=\"" << num(font_size + 3)
         << "\" font-weight=\"bold\">" << escaped(plot.title) << "</text>\n</g>\n";
+}
+
+Ticks axis_ticks(double data_low, double data_high, std::optional<double> low,
+                 std::optional<double> high) {
+    Ticks ticks = nice_ticks(low.value_or(data_low), high.value_or(data_high));
+    // A fixed end stays where it was asked to be, even between two ticks.
+    if (low) ticks.lower = *low;
+    if (high) ticks.upper = *high;
+    std::erase_if(ticks.values, [&](double v) {
+        const double slack = 1e-9 * ticks.step;
+        return v < ticks.lower - slack || v > ticks.upper + slack;
+    });
+    return ticks;
+}
+
+}  // namespace svg_detail
+
+namespace {
+
+using svg_detail::axis_ticks;
+using svg_detail::escaped;
+using svg_detail::font_size;
+using svg_detail::Frame;
+using svg_detail::num;
+using svg_detail::write_axes;
+
+using svg_detail::margin_bottom;
+using svg_detail::margin_left;
+using svg_detail::margin_top;
+
+// Layout, px: the right margin, the legend.
+constexpr double margin_right = 24.0;
+// Average advance of a sans-serif character at font_size, to size the legend box.
+constexpr double char_width = 6.2;
+constexpr double legend_sample = 30.0;
+constexpr double legend_row = 20.0;
+constexpr double legend_pad = 10.0;
+constexpr double max_legend_width = 420.0;
+
+// Heckbert (1990): the "nice" number nearest x (> 0), 1, 2, 5 or 10 times a power of ten.
+double nice_number(double x) {
+    const double power = std::pow(10.0, std::floor(std::log10(x)));
+    const double f = x / power;
+    return (f < 1.5 ? 1.0 : f < 3.0 ? 2.0 : f < 7.0 ? 5.0 : 10.0) * power;
+}
+
+bool has_legend(const Plot& plot) {
+    return std::any_of(plot.series.begin(), plot.series.end(),
+                       [](const Series& s) { return !s.label.empty(); });
+}
+
+double legend_width(const Plot& plot) {
+    std::size_t longest = 0;
+    for (const Series& s : plot.series) longest = std::max(longest, s.label.size());
+    const double width = 3.0 * legend_pad + legend_sample + char_width * double(longest);
+    return std::min(width, max_legend_width);
+}
+
+void check_series(const Series& s) {
+    if (s.x.size() != s.y.size()) {
+        throw std::invalid_argument("plot series \"" + s.label +
+                                    "\": " + std::to_string(s.x.size()) + " x values but " +
+                                    std::to_string(s.y.size()) + " y values");
+    }
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+        if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
+            throw std::invalid_argument("plot series \"" + s.label + "\": point " +
+                                        std::to_string(i) + " is not finite");
+        }
+    }
+}
+
+void write_marker(std::ostream& out, Marker marker, double cx, double cy, double size,
+                  const std::string& color, double opacity) {
+    const std::string style = " fill=\"" + color + "\" fill-opacity=\"" + num(opacity * 0.85) +
+                              "\" stroke=\"" + color + "\" stroke-opacity=\"" + num(opacity) + "\"";
+    switch (marker) {
+        case Marker::none:
+            return;
+        case Marker::circle:
+            out << "<circle cx=\"" << num(cx) << "\" cy=\"" << num(cy) << "\" r=\"" << num(size)
+                << '"' << style << "/>\n";
+            return;
+        case Marker::square:
+            out << "<rect x=\"" << num(cx - size) << "\" y=\"" << num(cy - size) << "\" width=\""
+                << num(2 * size) << "\" height=\"" << num(2 * size) << '"' << style << "/>\n";
+            return;
+        case Marker::triangle:
+            out << "<polygon points=\"" << num(cx) << ',' << num(cy - 1.2 * size) << ' '
+                << num(cx - 1.04 * size) << ',' << num(cy + 0.6 * size) << ' '
+                << num(cx + 1.04 * size) << ',' << num(cy + 0.6 * size) << '"' << style << "/>\n";
+            return;
+    }
+}
+
+void write_line(std::ostream& out, const std::vector<std::pair<double, double>>& points,
+                const Series& s) {
+    out << "<polyline fill=\"none\" stroke=\"" << s.color << "\" stroke-width=\""
+        << num(s.line_width) << "\" stroke-opacity=\"" << num(s.opacity)
+        << "\" stroke-linejoin=\"round\"";
+    if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << '"';
+    out << " points=\"";
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        out << (i ? " " : "") << num(points[i].first) << ',' << num(points[i].second);
+    }
+    out << "\"/>\n";
 }
 
 void write_legend(std::ostream& out, const Plot& plot, const PlotArea& a) {
@@ -195,19 +215,6 @@ void write_legend(std::ostream& out, const Plot& plot, const PlotArea& a) {
         y += legend_row;
     }
     out << "</g>\n";
-}
-
-Ticks axis_ticks(double data_low, double data_high, std::optional<double> low,
-                 std::optional<double> high) {
-    Ticks ticks = nice_ticks(low.value_or(data_low), high.value_or(data_high));
-    // A fixed end stays where it was asked to be, even between two ticks.
-    if (low) ticks.lower = *low;
-    if (high) ticks.upper = *high;
-    std::erase_if(ticks.values, [&](double v) {
-        const double slack = 1e-9 * ticks.step;
-        return v < ticks.lower - slack || v > ticks.upper + slack;
-    });
-    return ticks;
 }
 
 }  // namespace
@@ -265,10 +272,7 @@ std::string render_svg(const Plot& plot) {
     const Frame frame{plot_area(plot), x_ticks, y_ticks};
     const PlotArea& a = frame.area;
     std::ostringstream out;
-    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(plot.width) << "\" height=\""
-        << num(plot.height) << "\" viewBox=\"0 0 " << num(plot.width) << ' ' << num(plot.height)
-        << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n"
-        << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+    out << svg_detail::svg_open(plot.width, plot.height)
         << "<defs><clipPath id=\"plot-area\"><rect x=\"" << num(a.left) << "\" y=\"" << num(a.top)
         << "\" width=\"" << num(a.right - a.left) << "\" height=\"" << num(a.bottom - a.top)
         << "\"/></clipPath></defs>\n";

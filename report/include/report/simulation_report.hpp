@@ -2,6 +2,7 @@
 /// Human-readable and JSON reports of a simulation outcome. Every number carries its unit:
 /// in text after the value, in JSON as a key suffix (`reach_m`, `peak_normal_force_N`).
 
+#include "report/marked_rocks.hpp"
 #include "report/rock_series.hpp"
 
 #include "engine/outcome.hpp"
@@ -31,6 +32,8 @@ struct RunSeries {
     std::vector<RockSeries> rocks;
     /// The front of the rocks against time (cluster_front).
     std::vector<FrontPoint> front;
+    /// Frame interval of the camera that tracks the marked rocks, s (> 0; marked_rocks.hpp).
+    double camera_interval = default_camera_interval;
 };
 
 /// Which rocks the text summary prints in full (stations, every wall hit, speed against
