@@ -2,6 +2,7 @@
 
 #include "validate_seed001.hpp"
 
+#include "report/marked_rocks.hpp"
 #include "report/rock_series.hpp"
 #include "scenario/scenario_file.hpp"
 
@@ -82,24 +83,16 @@ seed001::RunRecord run_case(const Seed001Options& options, const Case& c, std::u
 
     const shapes::Slope slope(scenario.slope);
     const engine::PressureMap map = engine::pressure_map(*scenario.wall_cells, slope, outcome);
-    seed001::RunRecord record{c.cluster,       c.angle_deg,           c.shape, seed, {},
-                              elapsed.count(), outcome.simulated_time};
-    for (std::size_t i = 0; i < outcome.rocks.size(); ++i) {
-        const engine::RockOutcome& rock = outcome.rocks[i];
-        if (rock.name.empty()) continue;
-        seed001::RockRecord r{rock.name, nan, nan, nan};
-        for (const engine::RockCellLoad& load : map.rocks) {
-            if (load.rock == i) r.sampled_peak_force = load.sampled_peak_force;
-        }
-        for (const engine::WallHit& hit : rock.wall_hits) {
-            if (!(hit.peak_normal_force <= r.peak_force)) r.peak_force = hit.peak_normal_force;
-        }
-        if (i < series.series().size()) {
-            const report::RockSeries& s = series.series()[i];
-            if (!s.points.empty() && s.distance() >= 1.4)
-                r.speed_at_1_4m = report::point_at_distance(s, 1.4).speed;
-        }
-        record.rocks.push_back(r);
+    seed001::RunRecord record{c.cluster, c.angle_deg, c.shape, seed, {}, elapsed.count(),
+                              outcome.simulated_time};
+    // The paper's speeds are its camera's (frames every 0.04 s); forces its pad's readings.
+    const report::MarkedRocks marked =
+        report::marked_rocks(outcome, series.series(), &map, report::default_camera_interval,
+                             {1.4});
+    for (const report::MarkedRock& rock : marked.rocks) {
+        record.rocks.push_back({rock.name, rock.sampled_peak_force.value_or(nan),
+                                rock.wall_hits > 0 ? rock.peak_force : nan,
+                                rock.camera_speed.at(0)});
     }
     return record;
 }

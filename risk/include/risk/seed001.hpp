@@ -113,7 +113,8 @@ struct RockRecord {
     double sampled_peak_force = 0.0;
     /// Its largest force in any one contact step, N; NaN when it never touched the wall.
     double peak_force = 0.0;
-    /// Its speed when its travelled distance reached 1.4 m, m/s; NaN when it did not.
+    /// Its speed when its travelled distance reached 1.4 m as a camera with frames every 0.04 s
+    /// reads it (report::camera_series), m/s; NaN when it did not.
     double speed_at_1_4m = 0.0;
 };
 
