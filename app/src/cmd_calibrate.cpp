@@ -1,8 +1,10 @@
-// `rockfall calibrate drop`: seed 001's drop test run virtually over many orientations, the
+// `rockfall calibrate`: the command, and `calibrate drop`: seed 001's drop test run virtually over many orientations, the
 // coefficients of restitution of the first bounce, and the surface restitution that reproduces
 // a measured mean kinematic COR (docs/calibration.md).
 
+#include "calibrate_common.hpp"
 #include "calibrate_drop.hpp"
+#include "calibrate_heap.hpp"
 #include "commands.hpp"
 #include "integer_option.hpp"
 #include "output_file.hpp"
@@ -47,17 +49,6 @@ struct DropArgs {
     bool quiet = false;
 };
 
-// "OPTION = VALUE UNIT: must be in [LOWER, UPPER]" unless the value lies in the range.
-void require_in(const char* option, double value, const char* unit, double lower, double upper,
-                bool open_lower = false) {
-    const bool above = open_lower ? value > lower : value >= lower;
-    if (std::isfinite(value) && above && value <= upper) return;
-    std::ostringstream message;
-    message << option << " = " << value << (*unit ? " " : "") << unit << ": must be in "
-            << (open_lower ? '(' : '[') << lower << ", " << upper << ']';
-    throw std::invalid_argument(message.str());
-}
-
 void check_args(const DropArgs& args) {
     if (!(std::isfinite(args.height) && args.height > 0.0)) {
         std::ostringstream message;
@@ -84,85 +75,13 @@ void check_args(const DropArgs& args) {
     }
 }
 
-struct Rock {
-    std::string label;
-    engine::RockSpec spec;
-};
-
-std::string rock_label(const engine::RockRelease& release) {
-    if (!release.name.empty()) return release.name;
-    if (release.rock.shape) return "custom '" + release.rock.shape->name + "'";
-    return std::string(shapes::to_string(release.rock.kind));
-}
-
-engine::RockSpec spec_of(const scenario::ShapeResult& shape, double density) {
-    engine::RockSpec spec;
-    spec.size = shape.rock.nominal_size;
-    spec.density = density;
-    if (shape.rock.kind == shapes::RockKind::custom) {
-        spec.kind = shapes::RockKind::custom;
-        spec.shape = std::make_shared<const shapes::CustomShape>(
-            shapes::CustomShape{shape.label, shape.rock.hull});
-    } else {
-        spec.kind = shape.rock.kind;
-    }
-    return spec;
-}
-
-// The rocks to drop: every [[rocks]] entry of --scenario, or the rock (every entry of a
-// catalogue) the shape options describe, as `rockfall shape` reads them.
-std::vector<Rock> rocks_from_args(const DropArgs& args) {
-    const scenario::ShapeRequest& request = args.request;
-    std::vector<Rock> rocks;
-    if (args.scenario) {
-        if (request.file || request.kind || request.entry || request.size) {
-            throw std::invalid_argument(
-                "give the rock either as --scenario FILE (its [[rocks]]) or as FILE / --kind "
-                "with --entry and --size, not both");
-        }
-        const engine::Scenario scenario = scenario::load_scenario(*args.scenario).scenario;
-        for (const engine::RockRelease& release : scenario.rocks) {
-            rocks.push_back({rock_label(release), release.rock});
-        }
-        return rocks;
-    }
-    if (!request.file && !request.kind) {
-        throw std::invalid_argument(
-            "calibrate drop needs a rock: --kind K, a mesh FILE, a catalogue FILE [--entry NAME] "
-            "or --scenario FILE");
-    }
-    std::vector<scenario::ShapeResult> shapes;
-    if (request.file && scenario::is_catalogue(*request.file) && !request.entry && !request.kind) {
-        shapes = scenario::catalogue_shapes(request);
-    } else {
-        shapes.push_back(scenario::make_shape(request));
-    }
-    for (const scenario::ShapeResult& shape : shapes) {
-        rocks.push_back({shape.label, spec_of(shape, args.density)});
-    }
-    return rocks;
-}
-
-// The scenario rules for each rock (size, density, material, a custom kind with a hull).
-void validate_rocks(const std::vector<Rock>& rocks) {
-    for (const Rock& rock : rocks) {
-        engine::Scenario check;
-        check.rocks.front().rock = rock.spec;
-        try {
-            scenario::validate_scenario(check);
-        } catch (const scenario::ScenarioError& e) {
-            throw std::invalid_argument(rock.label + ": " + e.what());
-        }
-    }
-}
-
 void run(const DropArgs& args) {
     check_args(args);
     for (const std::optional<std::string>& path : {args.csv, args.svg, args.fragment}) {
         if (path) output_target(*path);
     }
-    const std::vector<Rock> rocks = rocks_from_args(args);
-    validate_rocks(rocks);
+    const std::vector<CalibrationRock> rocks =
+        calibration_rocks(args.request, args.scenario, args.density, "calibrate drop");
     if (args.fragment && rocks.size() != 1) {
         throw std::invalid_argument(
             "--fragment holds one shape's material: " + std::to_string(rocks.size()) +
@@ -192,7 +111,7 @@ void run(const DropArgs& args) {
         progress.update(offset + done);
     };
     const auto start = std::chrono::steady_clock::now();
-    for (const Rock& rock : rocks) {
+    for (const CalibrationRock& rock : rocks) {
         DropShapeRun run;
         run.label = rock.label;
         run.spec.rock = rock.spec;
@@ -313,6 +232,7 @@ void register_calibrate(CLI::App& app) {
         "parameters from measured results");
     cmd->require_subcommand(1);
     register_drop(*cmd);
+    register_heap(*cmd);
 }
 
 }  // namespace rockfall::app
