@@ -98,8 +98,8 @@ int main(int argc, char** argv) {
         risk::check_heap_spec(spec);
         std::cout << "heap test: " << o.rocks << " " << o.kind << " rocks, d50 "
                   << spec.heap.grading.d50 << " m, friction " << o.friction
-                  << ", rolling resistance " << o.rolling_resistance << ", lift "
-                  << o.lift_speed << " m/s, step " << o.time_step << " s\n";
+                  << ", rolling resistance " << o.rolling_resistance << ", lift " << o.lift_speed
+                  << " m/s, step " << o.time_step << " s\n";
         const bench::Stopwatch one;
         const risk::HeapMeasurement m = risk::run_heap(spec, 0);
         const double wall = one.wall();

@@ -1,7 +1,6 @@
 #include "calibrate_drop.hpp"
 
 #include "calibrate_common.hpp"
-
 #include "report/text_format.hpp"
 
 #include <algorithm>
@@ -93,7 +92,8 @@ void print_drop_text(std::ostream& out, const DropReport& report) {
                "p95  95% CI of mean (Student t)\n";
         print_summary_row(out, "kinematic COR, heights sqrt(H_r/H_i)", r.cor_height, "%7.4f");
         print_summary_row(out, "kinematic COR, speeds v_out/v_in", r.cor_speed, "%7.4f");
-        print_summary_row(out, "kinetic COR, impulses P_r/P_c (1st contact)", r.cor_kinetic, "%7.4f");
+        print_summary_row(out, "kinetic COR, impulses P_r/P_c (1st contact)", r.cor_kinetic,
+                          "%7.4f");
         print_summary_row(out, "energetic COR, sqrt(E_after/E_before)", r.cor_energy, "%7.4f");
         print_summary_row(out, "approach speed v_in (m/s)", r.approach_speed, "%7.4g");
         print_summary_row(out, "rebound speed v_out (m/s)", r.rebound_speed, "%7.4g");

@@ -1,7 +1,6 @@
 #include "calibrate_heap.hpp"
 
 #include "calibrate_common.hpp"
-
 #include "report/text_format.hpp"
 
 #include <algorithm>
@@ -38,8 +37,8 @@ void print_identification(std::ostream& out, const risk::FrictionIdentification&
             << "]  " << fmt("%14.2f", p.result.plane_angle_deg.standard_deviation) << "  "
             << fmt("%5d", static_cast<int>(a.count)) << '\n';
     }
-    out << "  identified: rock friction " << fmt("%.4f", id.identified.friction)
-        << ": mean angle " << fmt("%.2f", id.identified.result.angle_deg.mean) << " deg, target "
+    out << "  identified: rock friction " << fmt("%.4f", id.identified.friction) << ": mean angle "
+        << fmt("%.2f", id.identified.result.angle_deg.mean) << " deg, target "
         << short_number(id.target_deg) << " deg; " << id.curve.size() << " curve points, "
         << id.refinements.size()
         << (id.refinements.size() == 1 ? " refinement\n" : " refinements\n");
@@ -113,28 +112,26 @@ void print_heap_text(std::ostream& out, const HeapReport& report) {
         const engine::HeapScenario& h = run.spec.heap;
         const risk::HeapTestResult& r = run.result;
         out << "heap test: " << run.label << ", sphericity " << fmt("%.3f", run.sphericity)
-            << ", density " << short_number(h.rock.density) << " kg/m3; "
-            << grading_text(h.grading) << '\n';
+            << ", density " << short_number(h.rock.density) << " kg/m3; " << grading_text(h.grading)
+            << '\n';
         out << "  funnel: " << short_number(1000.0 * h.funnel.inner_diameter) << " mm inside, "
             << short_number(h.funnel.height) << " m high, lifted at "
             << short_number(1000.0 * h.funnel.lift_speed) << " mm/s; wall "
             << material_text(h.funnel.material) << '\n';
         out << "  surface: " << material_text(h.surface)
-            << (h.sheet ? ", perforated sheet" : ", flat") << "\n  rock:    "
-            << material_text(h.rock.material)
+            << (h.sheet ? ", perforated sheet" : ", flat")
+            << "\n  rock:    " << material_text(h.rock.material)
             << " (rock-rock contacts; with the surface and the wall the mean)\n";
         out << "  " << r.heaps.size() << " heap" << (r.heaps.size() == 1 ? "" : "s")
             << " from seed " << run.spec.seed << ", time step " << short_number(h.time_step)
             << " s, angle from " << run.spec.method.planes << " planes through the axis; "
-            << r.not_at_rest << " not at rest after " << short_number(h.max_settle_time)
-            << " s\n";
+            << r.not_at_rest << " not at rest after " << short_number(h.max_settle_time) << " s\n";
         for (const risk::HeapMeasurement& m : r.heaps) {
-            out << "    heap " << m.index << ": fill " << fmt("%.3f", m.fill_height)
-                << " m, lift " << fmt("%.1f", m.lift_time) << " s, height "
-                << fmt("%.3f", m.heap_height) << " m, foot radius " << fmt("%.3f", m.foot_radius)
-                << " m, " << m.rolled_off << " rolled off, angle " << fmt("%.2f", m.angle_deg)
-                << " deg (sd " << fmt("%.2f", m.angle_sd_deg) << " over " << m.valid_planes
-                << " planes)\n";
+            out << "    heap " << m.index << ": fill " << fmt("%.3f", m.fill_height) << " m, lift "
+                << fmt("%.1f", m.lift_time) << " s, height " << fmt("%.3f", m.heap_height)
+                << " m, foot radius " << fmt("%.3f", m.foot_radius) << " m, " << m.rolled_off
+                << " rolled off, angle " << fmt("%.2f", m.angle_deg) << " deg (sd "
+                << fmt("%.2f", m.angle_sd_deg) << " over " << m.valid_planes << " planes)\n";
         }
         out << "                                                 mean      sd      p5     p50     "
                "p95  95% CI of mean (Student t)\n";
@@ -152,29 +149,28 @@ nlohmann::json heap_json(const HeapReport& report) {
     nlohmann::json shapes = nlohmann::json::array();
     for (const HeapShapeRun& run : report.shapes) {
         const engine::HeapScenario& h = run.spec.heap;
-        nlohmann::json shape = {
-            {"label", run.label},
-            {"sphericity", run.sphericity},
-            {"density_kg_m3", h.rock.density},
-            {"grading",
-             {{"count", h.grading.count},
-              {"d50_m", h.grading.d50},
-              {"cu", h.grading.cu},
-              {"d_min_m", h.grading.d_min},
-              {"d_max_m", h.grading.d_max}}},
-            {"rock_material", material_json(h.rock.material)},
-            {"surface_material", material_json(h.surface)},
-            {"sheet", h.sheet.has_value()},
-            {"funnel",
-             {{"inner_diameter_m", h.funnel.inner_diameter},
-              {"height_m", h.funnel.height},
-              {"lift_speed_m_s", h.funnel.lift_speed},
-              {"material", material_json(h.funnel.material)}}},
-            {"count", run.spec.count},
-            {"seed", run.spec.seed},
-            {"time_step_s", h.time_step},
-            {"planes", run.spec.method.planes},
-            {"result", result_json(run.result)}};
+        nlohmann::json shape = {{"label", run.label},
+                                {"sphericity", run.sphericity},
+                                {"density_kg_m3", h.rock.density},
+                                {"grading",
+                                 {{"count", h.grading.count},
+                                  {"d50_m", h.grading.d50},
+                                  {"cu", h.grading.cu},
+                                  {"d_min_m", h.grading.d_min},
+                                  {"d_max_m", h.grading.d_max}}},
+                                {"rock_material", material_json(h.rock.material)},
+                                {"surface_material", material_json(h.surface)},
+                                {"sheet", h.sheet.has_value()},
+                                {"funnel",
+                                 {{"inner_diameter_m", h.funnel.inner_diameter},
+                                  {"height_m", h.funnel.height},
+                                  {"lift_speed_m_s", h.funnel.lift_speed},
+                                  {"material", material_json(h.funnel.material)}}},
+                                {"count", run.spec.count},
+                                {"seed", run.spec.seed},
+                                {"time_step_s", h.time_step},
+                                {"planes", run.spec.method.planes},
+                                {"result", result_json(run.result)}};
         if (run.identification) {
             const risk::FrictionIdentification& id = *run.identification;
             shape["identification"] = {
@@ -243,7 +239,8 @@ std::string heap_fragment(const HeapShapeRun& run) {
         << exact(id.target_deg) << " deg\n# (achieved "
         << fmt("%.2f", id.identified.result.angle_deg.mean) << " deg; consistent friction "
         << fmt("%.3f", id.consistent.lower) << " to " << fmt("%.3f", id.consistent.upper)
-        << "). Rock-rock contacts use it as it is; a\n# rock-surface contact uses the mean with the "
+        << "). Rock-rock contacts use it as it is; a\n# rock-surface contact uses the mean with "
+           "the "
            "surface's friction. For [[rocks]] entries copy\n# these keys into each rock's "
            "`material` table.\n"
         << "# Use it with extends = \"THIS_FILE.toml\" in a scenario with a [cluster].\n"

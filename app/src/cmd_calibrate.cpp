@@ -1,6 +1,6 @@
-// `rockfall calibrate`: the command, and `calibrate drop`: seed 001's drop test run virtually over many orientations, the
-// coefficients of restitution of the first bounce, and the surface restitution that reproduces
-// a measured mean kinematic COR (docs/calibration.md).
+// `rockfall calibrate`: the command, and `calibrate drop`: seed 001's drop test run virtually over
+// many orientations, the coefficients of restitution of the first bounce, and the surface
+// restitution that reproduces a measured mean kinematic COR (docs/calibration.md).
 
 #include "calibrate_common.hpp"
 #include "calibrate_drop.hpp"

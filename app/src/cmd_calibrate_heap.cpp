@@ -195,10 +195,13 @@ void register_heap(CLI::App& calibrate) {
         ->transform(integer_in(1, shapes::max_cluster_rocks, "a rock count"));
     cmd->add_option("--d50", h.grading.d50, "Grading: size passed by 50 % of the mass (m)")
         ->capture_default_str();
-    cmd->add_option("--cu", h.grading.cu, "Grading: uniformity d60/d10, > 1")->capture_default_str();
-    cmd->add_option("--d-min", h.grading.d_min, "Grading: smallest rock (m)")->capture_default_str();
-    cmd->add_option("--d-max", h.grading.d_max, "Grading: largest rock (m), at most half the "
-                                                "funnel diameter")
+    cmd->add_option("--cu", h.grading.cu, "Grading: uniformity d60/d10, > 1")
+        ->capture_default_str();
+    cmd->add_option("--d-min", h.grading.d_min, "Grading: smallest rock (m)")
+        ->capture_default_str();
+    cmd->add_option("--d-max", h.grading.d_max,
+                    "Grading: largest rock (m), at most half the "
+                    "funnel diameter")
         ->capture_default_str();
     cmd->add_option("--funnel-diameter", h.funnel.inner_diameter,
                     "Funnel inside diameter (m), in [0.02, 2]")

@@ -144,8 +144,8 @@ class HeapRun {
 
     // The top of rock i, m.
     double top_of(std::size_t i) const {
-        return rock_top(outcome_.rocks[i], rock_state(world_.state(bodies_[i]), 0.0, 0.0,
-                                                      Vec3::Zero()));
+        return rock_top(outcome_.rocks[i],
+                        rock_state(world_.state(bodies_[i]), 0.0, 0.0, Vec3::Zero()));
     }
 
     // The highest top of the rocks that reach into the funnel's circle, m.

@@ -62,8 +62,8 @@ class World {
     // A kinematic body of `boxes` (in its own frame) with `material`, its frame at `position`:
     // moved by move_kinematic, it pushes rocks and carries its velocity into their contacts,
     // but nothing pushes it (the heap test's funnel). Returns its index.
-    int add_kinematic_boxes(const std::vector<shapes::OrientedBox>& boxes,
-                            const Material& material, const Vec3& position);
+    int add_kinematic_boxes(const std::vector<shapes::OrientedBox>& boxes, const Material& material,
+                            const Vec3& position);
     // Puts kinematic body `body`'s frame at `position` by the end of the next step; Bullet
     // gives it the velocity of that move over the step.
     void move_kinematic(int body, const Vec3& position);

@@ -27,8 +27,8 @@ void require_count(const char* field, std::int64_t value, std::int64_t lower, st
                    const char* unit) {
     if (value >= lower && value <= upper) return;
     std::ostringstream message;
-    message << field << " = " << value << ' ' << unit << ": must be in [" << lower << ", "
-            << upper << ']';
+    message << field << " = " << value << ' ' << unit << ": must be in [" << lower << ", " << upper
+            << ']';
     throw std::invalid_argument(message.str());
 }
 
@@ -70,8 +70,7 @@ void check_heap_spec(const HeapTestSpec& spec) {
         detail::require_range("sphericity", h.sphericity, "", 0.5, 0.95, false, false);
     detail::require_range("funnel.inner_diameter", f.inner_diameter, "m", 0.02, 2.0, false, false);
     detail::require_range("funnel.height", f.height, "m", 0.05, 5.0, false, false);
-    detail::require_range("funnel.wall_thickness", f.wall_thickness, "m", 1e-3, 0.05, false,
-                          false);
+    detail::require_range("funnel.wall_thickness", f.wall_thickness, "m", 1e-3, 0.05, false, false);
     require_count("funnel.facets", f.facets, 12, 256, "boxes");
     detail::require_range("funnel.lift_speed", f.lift_speed, "m/s", 1e-4, 1.0, false, false);
     detail::require_range("funnel.rim_gap", f.rim_gap, "m", 0.0, 0.01, false, false);
@@ -218,11 +217,9 @@ HeapMeasurement measure_heap(const engine::HeapOutcome& heap, double bin_width,
         m.foot_radius += profile.foot_radius;
     }
     m.valid_planes = static_cast<int>(angles.size());
-    if (angles.empty()) {
-        throw std::runtime_error(
-            "no heap to measure: in no plane do 3 outline bins lie on a flank (every rock "
-            "rolled off, or the rocks spread as a single layer)");
-    }
+    // No plane with a flank of 3 bins: the rocks spread as a single layer (or rolled off),
+    // a heap of angle 0.
+    if (angles.empty()) return m;
     m.heap_height /= m.valid_planes;
     m.foot_radius /= m.valid_planes;
     m.angle_deg = mean(angles);
@@ -266,7 +263,7 @@ HeapTestResult summarize(std::vector<HeapMeasurement> heaps) {
         }
     }
     r.angle_deg = sample_summary(angle);
-    r.plane_angle_deg = sample_summary(plane);
+    r.plane_angle_deg = sample_summary(plane.empty() ? angle : plane);
     r.heap_height = sample_summary(height);
     r.fill_height = sample_summary(fill);
     return r;
@@ -277,7 +274,8 @@ std::vector<HeapTestResult> run_tests(const HeapTestSpec& spec, const std::vecto
                                       int threads, std::int64_t done_before, std::int64_t total,
                                       const BatchProgress& progress) {
     std::vector<HeapTestSpec> specs(values.size(), spec);
-    for (std::size_t v = 0; v < values.size(); ++v) specs[v].heap.rock.material.friction = values[v];
+    for (std::size_t v = 0; v < values.size(); ++v)
+        specs[v].heap.rock.material.friction = values[v];
     const auto count = static_cast<std::int64_t>(values.size()) * spec.count;
     std::vector<HeapMeasurement> heaps(static_cast<std::size_t>(count));
     detail::run_parallel(
@@ -297,8 +295,7 @@ std::vector<HeapTestResult> run_tests(const HeapTestSpec& spec, const std::vecto
 
 }  // namespace
 
-HeapTestResult run_heap_test(const HeapTestSpec& spec, int threads,
-                             const BatchProgress& progress) {
+HeapTestResult run_heap_test(const HeapTestSpec& spec, int threads, const BatchProgress& progress) {
     check_heap_spec(spec);
     return std::move(
         run_tests(spec, {spec.heap.rock.material.friction}, threads, 0, spec.count, progress)
@@ -312,12 +309,12 @@ FrictionIdentification identify_friction(const HeapTestSpec& spec, double target
     detail::require_range("target_angle", target_deg, "deg", 0.0, 90.0, true, true);
     require_count("curve_points", options.curve_points, 2, 101, "");
     detail::require_range("friction_min", options.friction_min, "", 0.0, 2.0, false, true);
-    detail::require_range("friction_max", options.friction_max, "", options.friction_min, 2.0,
-                          true, false);
+    detail::require_range("friction_max", options.friction_max, "", options.friction_min, 2.0, true,
+                          false);
     std::vector<double> values;
     for (int i = 0; i < options.curve_points; ++i) {
-        values.push_back(options.friction_min + (options.friction_max - options.friction_min) *
-                                                    i / (options.curve_points - 1));
+        values.push_back(options.friction_min + (options.friction_max - options.friction_min) * i /
+                                                    (options.curve_points - 1));
     }
     const std::int64_t total = spec.count * (options.curve_points + options.max_iterations);
     std::int64_t done = 0;
@@ -341,9 +338,8 @@ FrictionIdentification identify_friction(const HeapTestSpec& spec, double target
                 << " to " << options.friction_max << " for these rocks";
         throw std::invalid_argument(message.str());
     };
-    const ParameterSearch search =
-        search_parameter(values, target_deg, {options.tolerance, options.max_iterations},
-                         evaluate, unreachable);
+    const ParameterSearch search = search_parameter(
+        values, target_deg, {options.tolerance, options.max_iterations}, evaluate, unreachable);
     if (progress) progress(done, done);
     const auto run_at = [&](double friction) {
         return *std::find_if(runs.begin(), runs.end(),

@@ -52,8 +52,8 @@ std::vector<SearchPoint> all_points(const ParameterSearch& search) {
 ParameterSearch search_parameter(const std::vector<double>& curve, double target,
                                  const SearchOptions& options, const SearchEvaluator& evaluate,
                                  const UnreachableTarget& unreachable) {
-    detail::require(curve.size() >= 2, "curve points = " + std::to_string(curve.size()) +
-                                           ": must be >= 2");
+    detail::require(curve.size() >= 2,
+                    "curve points = " + std::to_string(curve.size()) + ": must be >= 2");
     detail::require(std::is_sorted(curve.begin(), curve.end()),
                     "curve parameters must be ascending");
     detail::require_positive("tolerance", options.tolerance, "");
@@ -63,9 +63,8 @@ ParameterSearch search_parameter(const std::vector<double>& curve, double target
 
     // The first bracket where the mean crosses the target.
     std::size_t b = 1;
-    while (b < search.curve.size() && (search.curve[b - 1].value.mean - target) *
-                                              (search.curve[b].value.mean - target) >
-                                          0.0)
+    while (b < search.curve.size() &&
+           (search.curve[b - 1].value.mean - target) * (search.curve[b].value.mean - target) > 0.0)
         ++b;
     if (b == search.curve.size()) {
         double lo = search.curve.front().value.mean, hi = lo;

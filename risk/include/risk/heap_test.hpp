@@ -127,9 +127,9 @@ struct HeapMeasurement {
     int valid_planes = 0;
 };
 
-/// Measures a heap's angle of repose in `method.planes` half-planes (bins of `bin_width`, m);
-/// throws std::runtime_error when no plane has 3 fitted bins (no heap: every rock rolled off
-/// or the heap is a single layer).
+/// Measures a heap's angle of repose in `method.planes` half-planes (bins of `bin_width`, m).
+/// When no plane has 3 fitted bins (the rocks spread as a single layer, or rolled off) the
+/// angle is 0 with valid_planes 0.
 HeapMeasurement measure_heap(const engine::HeapOutcome& heap, double bin_width,
                              const AngleMethod& method);
 
@@ -146,7 +146,8 @@ struct HeapTestResult {
     std::int64_t not_at_rest = 0;
     /// The heaps' mean angles, deg: the test's result and its interval.
     SampleSummary angle_deg;
-    /// Every valid plane of every heap, deg: the scatter over planes and heaps.
+    /// Every valid plane of every heap, deg: the scatter over planes and heaps (the heap means
+    /// when no plane is valid).
     SampleSummary plane_angle_deg;
     /// Heap heights and fill heights, m.
     SampleSummary heap_height;
