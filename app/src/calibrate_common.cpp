@@ -1,5 +1,6 @@
 #include "calibrate_common.hpp"
 
+#include "output_file.hpp"
 #include "report/text_format.hpp"
 #include "scenario/scenario_file.hpp"
 
@@ -100,6 +101,48 @@ std::vector<CalibrationRock> calibration_rocks(const scenario::ShapeRequest& req
     }
     validate_rocks(rocks);
     return rocks;
+}
+
+void check_calibration_files(const CalibrationFiles& files) {
+    for (const std::optional<std::string>& path : {files.csv, files.svg, files.fragment}) {
+        if (path) output_target(*path);
+    }
+}
+
+void write_calibration_files(const CalibrationFiles& files,
+                             const std::function<void(std::ostream&)>& csv,
+                             const std::function<report::Plot()>& figure,
+                             const std::function<std::string()>& fragment) {
+    if (files.csv) {
+        OutputFile file(*files.csv);
+        csv(file.stream());
+        file.commit();
+    }
+    if (files.svg) write_svg(*files.svg, figure());
+    if (files.fragment) {
+        OutputFile file(*files.fragment);
+        file.stream() << fragment();
+        file.commit();
+    }
+}
+
+void print_calibration_files(std::ostream& out, const CalibrationFiles& files,
+                             const std::string& csv_what) {
+    if (files.csv) out << csv_what << " written to " << *files.csv << '\n';
+    if (files.svg) out << "figure written to " << *files.svg << '\n';
+    if (files.fragment) out << "scenario fragment written to " << *files.fragment << '\n';
+}
+
+void add_shape_options(CLI::App& cmd, scenario::ShapeRequest& request,
+                       const std::string& file_help) {
+    std::string kinds;
+    for (const std::string& name : scenario::shape_kind_names())
+        kinds += (kinds.empty() ? "" : ", ") + name;
+    cmd.add_option("FILE", request.file, file_help);
+    cmd.add_option("--kind", request.kind, "Shape: " + kinds)
+        ->check(CLI::IsMember(scenario::shape_kind_names()));
+    cmd.add_option("--entry", request.entry, "Catalogue entry");
+    cmd.add_option("--scale", request.scale, "Mesh units to m (mm: 0.001)");
 }
 
 std::string material_text(const engine::Material& m) {

@@ -9,8 +9,10 @@
 #include "risk/parameter_search.hpp"
 #include "risk/sample_summary.hpp"
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -36,6 +38,31 @@ void require_in(const char* option, double value, const char* unit, double lower
 std::vector<CalibrationRock> calibration_rocks(const scenario::ShapeRequest& request,
                                                const std::optional<std::string>& scenario_file,
                                                double density, const std::string& command);
+
+/// Where a calibration command writes its files (each optional).
+struct CalibrationFiles {
+    std::optional<std::string> csv;
+    std::optional<std::string> svg;
+    std::optional<std::string> fragment;
+};
+
+/// Checks every given path by the output-file rule before the experiment runs.
+void check_calibration_files(const CalibrationFiles& files);
+
+/// Writes the given files: the CSV by `csv`, the figure `figure()`, the fragment `fragment()`.
+void write_calibration_files(const CalibrationFiles& files,
+                             const std::function<void(std::ostream&)>& csv,
+                             const std::function<report::Plot()>& figure,
+                             const std::function<std::string()>& fragment);
+
+/// "WHAT written to PATH" for every file written (`csv_what` names the CSV's rows).
+void print_calibration_files(std::ostream& out, const CalibrationFiles& files,
+                             const std::string& csv_what);
+
+/// Adds FILE, --kind, --entry and --scale (a rock as `rockfall shape` reads it) to `cmd`;
+/// `file_help` says what a catalogue means to the command.
+void add_shape_options(CLI::App& cmd, scenario::ShapeRequest& request,
+                       const std::string& file_help);
 
 /// "friction F, restitution E, rolling resistance R".
 std::string material_text(const engine::Material& m);

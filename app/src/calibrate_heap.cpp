@@ -35,7 +35,7 @@ void print_identification(std::ostream& out, const risk::FrictionIdentification&
         out << "    " << fmt("%13.4f", p.friction) << "  " << fmt("%16.2f", a.mean) << "  ["
             << fmt("%6.2f", a.mean_interval.lower) << ", " << fmt("%6.2f", a.mean_interval.upper)
             << "]  " << fmt("%14.2f", p.result.plane_angle_deg.standard_deviation) << "  "
-            << fmt("%5d", static_cast<int>(a.count)) << '\n';
+            << fmt("%5.0f", static_cast<double>(a.count)) << '\n';
     }
     out << "  identified: rock friction " << fmt("%.4f", id.identified.friction) << ": mean angle "
         << fmt("%.2f", id.identified.result.angle_deg.mean) << " deg, target "

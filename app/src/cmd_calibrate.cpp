@@ -42,9 +42,7 @@ struct DropArgs {
     std::optional<double> target_cor;
     std::string cor_from = "height";
     int curve_points = 11;
-    std::optional<std::string> svg;
-    std::optional<std::string> csv;
-    std::optional<std::string> fragment;
+    CalibrationFiles files;
     bool json = false;
     bool quiet = false;
 };
@@ -69,7 +67,7 @@ void check_args(const DropArgs& args) {
             throw std::invalid_argument(message.str());
         }
     }
-    if (!args.target_cor && (args.svg || args.fragment)) {
+    if (!args.target_cor && (args.files.svg || args.files.fragment)) {
         throw std::invalid_argument(
             "--svg and --fragment show an identification: give --target-cor");
     }
@@ -77,12 +75,10 @@ void check_args(const DropArgs& args) {
 
 void run(const DropArgs& args) {
     check_args(args);
-    for (const std::optional<std::string>& path : {args.csv, args.svg, args.fragment}) {
-        if (path) output_target(*path);
-    }
+    check_calibration_files(args.files);
     const std::vector<CalibrationRock> rocks =
         calibration_rocks(args.request, args.scenario, args.density, "calibrate drop");
-    if (args.fragment && rocks.size() != 1) {
+    if (args.files.fragment && rocks.size() != 1) {
         throw std::invalid_argument(
             "--fragment holds one shape's material: " + std::to_string(rocks.size()) +
             " rocks given (pick one with --entry NAME)");
@@ -136,25 +132,16 @@ void run(const DropArgs& args) {
     report.runtime =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    if (args.csv) {
-        OutputFile file(*args.csv);
-        write_drop_csv(file.stream(), report);
-        file.commit();
-    }
-    if (args.svg) write_svg(*args.svg, drop_figure(report));
-    if (args.fragment) {
-        OutputFile file(*args.fragment);
-        file.stream() << drop_fragment(report.shapes.front(), report.definition);
-        file.commit();
-    }
+    write_calibration_files(
+        args.files, [&](std::ostream& out) { write_drop_csv(out, report); },
+        [&] { return drop_figure(report); },
+        [&] { return drop_fragment(report.shapes.front(), report.definition); });
     if (args.json) {
         std::cout << drop_json(report).dump(2) << '\n';
         return;
     }
     print_drop_text(std::cout, report);
-    if (args.csv) std::cout << "drops written to " << *args.csv << '\n';
-    if (args.svg) std::cout << "figure written to " << *args.svg << '\n';
-    if (args.fragment) std::cout << "scenario fragment written to " << *args.fragment << '\n';
+    print_calibration_files(std::cout, args.files, "drops");
 }
 
 void register_drop(CLI::App& calibrate) {
@@ -164,18 +151,11 @@ void register_drop(CLI::App& calibrate) {
         "Drop test (seed 001): a rock dropped in many random orientations onto a surface; the "
         "kinematic, kinetic and energetic coefficients of restitution of its first bounce; with "
         "--target-cor the surface restitution that reproduces a measured mean COR");
-    std::string kinds;
-    for (const std::string& name : scenario::shape_kind_names())
-        kinds += (kinds.empty() ? "" : ", ") + name;
-    cmd->add_option("FILE", args->request.file,
-                    "Mesh file, or a catalogue (every entry is dropped unless --entry)");
-    cmd->add_option("--kind", args->request.kind, "Shape: " + kinds)
-        ->check(CLI::IsMember(scenario::shape_kind_names()));
-    cmd->add_option("--entry", args->request.entry, "Catalogue entry");
+    add_shape_options(*cmd, args->request,
+                      "Mesh file, or a catalogue (every entry is dropped unless --entry)");
     cmd->add_option("--size", args->request.size,
                     "Volume-equivalent diameter (m), in [0.01, 10]; default 0.2, a mesh or "
                     "catalogue entry keeps its own");
-    cmd->add_option("--scale", args->request.scale, "Mesh units to m (mm: 0.001)");
     cmd->add_option("--scenario", args->scenario,
                     "Scenario file: every [[rocks]] entry (shape, size, density, material) is "
                     "dropped");
@@ -213,9 +193,9 @@ void register_drop(CLI::App& calibrate) {
                     "Points of the curve over surface restitution [0, 1], >= 2")
         ->capture_default_str()
         ->transform(integer_in(2, 101, "a number of curve points"));
-    cmd->add_option("--svg", args->svg, "Write the curve (the paper's Fig. 11) as SVG");
-    cmd->add_option("--csv", args->csv, "Write every drop's measurements as CSV");
-    cmd->add_option("--fragment", args->fragment,
+    cmd->add_option("--svg", args->files.svg, "Write the curve (the paper's Fig. 11) as SVG");
+    cmd->add_option("--csv", args->files.csv, "Write every drop's measurements as CSV");
+    cmd->add_option("--fragment", args->files.fragment,
                     "Write the identified [materials.slope] as a scenario fragment (TOML) for "
                     "extends");
     cmd->add_flag("--json", args->json, "Print one JSON document instead of the summary");

@@ -32,9 +32,7 @@ struct HeapArgs {
     std::vector<double> friction_range = {0.1, 1.0};
     int curve_points = 6;
     int threads = 0;
-    std::optional<std::string> svg;
-    std::optional<std::string> csv;
-    std::optional<std::string> fragment;
+    CalibrationFiles files;
     bool json = false;
     bool quiet = false;
 };
@@ -65,6 +63,7 @@ void check_args(const HeapArgs& args) {
     require_in("--floor-size", h.floor_size, "m", 4.0 * h.funnel.inner_diameter, 20.0);
     require_in("--time-step", h.time_step, "s", 1e-5, 1e-2);
     require_in("--rest-speed", h.rest_speed, "m/s", 0.0, 1.0, true);
+    require_in("--max-fill-time", h.max_fill_time, "s", 0.0, 1000.0, true);
     require_in("--max-settle-time", h.max_settle_time, "s", 0.0, 1000.0, true);
     if (args.target_angle) require_in("--target-angle", *args.target_angle, "deg", 0.0, 90.0, true);
     if (args.target_angle) {
@@ -73,7 +72,7 @@ void check_args(const HeapArgs& args) {
         require_in("--friction-range MIN", args.friction_range[0], "", 0.0, 2.0);
         require_in("--friction-range MAX", args.friction_range[1], "", 0.0, 2.0);
     }
-    if (!args.target_angle && (args.svg || args.fragment)) {
+    if (!args.target_angle && (args.files.svg || args.files.fragment)) {
         throw std::invalid_argument(
             "--svg and --fragment show an identification: give --target-angle");
     }
@@ -81,13 +80,11 @@ void check_args(const HeapArgs& args) {
 
 void run(HeapArgs args) {
     check_args(args);
-    for (const std::optional<std::string>& path : {args.csv, args.svg, args.fragment}) {
-        if (path) output_target(*path);
-    }
+    check_calibration_files(args.files);
     if (args.sheet) args.spec.heap.sheet = shapes::PerforatedSheet{};
     std::vector<CalibrationRock> rocks =
         calibration_rocks(args.request, std::nullopt, args.density, "calibrate heap");
-    if (args.fragment && rocks.size() != 1) {
+    if (args.files.fragment && rocks.size() != 1) {
         throw std::invalid_argument(
             "--fragment holds one shape's material: " + std::to_string(rocks.size()) +
             " rocks given (pick one with --entry NAME)");
@@ -139,25 +136,15 @@ void run(HeapArgs args) {
     report.runtime =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    if (args.csv) {
-        OutputFile file(*args.csv);
-        write_heap_csv(file.stream(), report);
-        file.commit();
-    }
-    if (args.svg) write_svg(*args.svg, heap_figure(report));
-    if (args.fragment) {
-        OutputFile file(*args.fragment);
-        file.stream() << heap_fragment(report.shapes.front());
-        file.commit();
-    }
+    write_calibration_files(
+        args.files, [&](std::ostream& out) { write_heap_csv(out, report); },
+        [&] { return heap_figure(report); }, [&] { return heap_fragment(report.shapes.front()); });
     if (args.json) {
         std::cout << heap_json(report).dump(2) << '\n';
         return;
     }
     print_heap_text(std::cout, report);
-    if (args.csv) std::cout << "heap outlines written to " << *args.csv << '\n';
-    if (args.svg) std::cout << "figure written to " << *args.svg << '\n';
-    if (args.fragment) std::cout << "scenario fragment written to " << *args.fragment << '\n';
+    print_calibration_files(std::cout, args.files, "heap outlines");
 }
 
 }  // namespace
@@ -170,16 +157,9 @@ void register_heap(CLI::App& calibrate) {
         "the heap's angle of repose measured; with --target-angle the rock friction that "
         "reproduces a measured angle");
     engine::HeapScenario& h = args->spec.heap;
-    std::string kinds;
-    for (const std::string& name : scenario::shape_kind_names())
-        kinds += (kinds.empty() ? "" : ", ") + name;
-    cmd->add_option("FILE", args->request.file,
-                    "Mesh file, or a catalogue (every entry is tested unless --entry)");
-    cmd->add_option("--kind", args->request.kind, "Shape: " + kinds)
-        ->check(CLI::IsMember(scenario::shape_kind_names()));
-    cmd->add_option("--entry", args->request.entry, "Catalogue entry");
+    add_shape_options(*cmd, args->request,
+                      "Mesh file, or a catalogue (every entry is tested unless --entry)");
     cmd->add_option("--size", args->request.size, "Not used: sizes come from the grading");
-    cmd->add_option("--scale", args->request.scale, "Mesh units to m (mm: 0.001)");
     cmd->add_option("--density", args->density, "Rock density (kg/m3), in [500, 10000]")
         ->capture_default_str();
     cmd->add_option("--friction", args->rock.friction,
@@ -232,8 +212,11 @@ void register_heap(CLI::App& calibrate) {
     cmd->add_option("--rest-speed", h.rest_speed,
                     "At rest below this root mean square rock speed (m/s)")
         ->capture_default_str();
+    cmd->add_option("--max-fill-time", h.max_fill_time,
+                    "Longest simulated fill before the lift (s)")
+        ->capture_default_str();
     cmd->add_option("--max-settle-time", h.max_settle_time,
-                    "Longest simulated fill and settling (s), each")
+                    "Longest simulated settling of the heap after the lift (s)")
         ->capture_default_str();
     cmd->add_option("--count", args->spec.count, "Heaps (repeats with their own seeds), >= 1")
         ->capture_default_str()
@@ -257,9 +240,9 @@ void register_heap(CLI::App& calibrate) {
                     "Points of the curve over the friction range, >= 2")
         ->capture_default_str()
         ->transform(integer_in(2, 101, "a number of curve points"));
-    cmd->add_option("--svg", args->svg, "Write the curve (the paper's Fig. 8) as SVG");
-    cmd->add_option("--csv", args->csv, "Write every heap's angle per plane as CSV");
-    cmd->add_option("--fragment", args->fragment,
+    cmd->add_option("--svg", args->files.svg, "Write the curve (the paper's Fig. 8) as SVG");
+    cmd->add_option("--csv", args->files.csv, "Write every heap's angle per plane as CSV");
+    cmd->add_option("--fragment", args->files.fragment,
                     "Write the identified [cluster.material] as a scenario fragment (TOML) for "
                     "extends");
     cmd->add_flag("--json", args->json, "Print one JSON document instead of the summary");

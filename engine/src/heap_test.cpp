@@ -117,7 +117,7 @@ class HeapRun {
     HeapOutcome execute() {
         // Phase 1: the packed rocks fall into the funnel and settle there (a fill still
         // creeping at max_settle_time is lifted all the same).
-        if (!settle(outcome_.fill_time) && failed()) return finish();
+        if (!settle(outcome_.fill_time, heap_.max_fill_time) && failed()) return finish();
         double fill_top = outcome_.surface_z;
         for (std::size_t i = 0; i < bodies_.size(); ++i) fill_top = std::max(fill_top, top_of(i));
         outcome_.fill_height = fill_top - outcome_.surface_z;
@@ -135,7 +135,8 @@ class HeapRun {
         }
         world_.remove_kinematic(funnel_);
         // Phase 3: the heap settles.
-        if (!settle(outcome_.settle_time) && !failed()) outcome_.status = HeapStatus::time_limit;
+        if (!settle(outcome_.settle_time, heap_.max_settle_time) && !failed())
+            outcome_.status = HeapStatus::time_limit;
         return finish();
     }
 
@@ -188,12 +189,12 @@ class HeapRun {
     }
 
     // Steps until every rock on the surface has been slower than rest_speed for
-    // rest_duration (true), or max_settle_time or a failure (false); `elapsed` gets the time.
-    bool settle(double& elapsed) {
+    // rest_duration (true), or `limit` (s) or a failure (false); `elapsed` gets the time.
+    bool settle(double& elapsed, double limit) {
         double quiet = 0.0;
         elapsed = 0.0;
         while (quiet < heap_.rest_duration) {
-            if (elapsed >= heap_.max_settle_time || !step()) return false;
+            if (elapsed >= limit || !step()) return false;
             elapsed += heap_.time_step;
             // The mass-weighted root mean square speed, sqrt(2 E_translation / M): single
             // rocks of a pile rock at about g dt (a rigid contact's jitter) forever.

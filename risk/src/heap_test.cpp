@@ -85,6 +85,7 @@ void check_heap_spec(const HeapTestSpec& spec) {
     detail::require_range("time_step", h.time_step, "s", 1e-5, 1e-2, false, false);
     detail::require_positive("rest_speed", h.rest_speed, "m/s");
     detail::require_positive("rest_duration", h.rest_duration, "s");
+    detail::require_positive("max_fill_time", h.max_fill_time, "s");
     detail::require_positive("max_settle_time", h.max_settle_time, "s");
     require_count("solver_iterations", h.solver_iterations, 1, 100, "");
     detail::require_positive("gravity", h.gravity, "m/s2");
