@@ -1,10 +1,9 @@
 #include "calibrate_drop.hpp"
 
+#include "calibrate_common.hpp"
 #include "report/text_format.hpp"
 
 #include <algorithm>
-#include <charconv>
-#include <cstdio>
 #include <sstream>
 
 namespace rockfall::app {
@@ -13,49 +12,11 @@ namespace {
 using report::fmt;
 using risk::SampleSummary;
 
-const char* const kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
-                               "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"};
-// More shapes than this get no confidence band in the figure (it would hide the curves).
-constexpr std::size_t kBandedShapes = 3;
-
-std::string material_text(const engine::Material& m) {
-    return "friction " + report::short_number(m.friction) + ", restitution " +
-           report::short_number(m.restitution) + ", rolling resistance " +
-           report::short_number(m.rolling_resistance);
-}
-
 engine::Material contact(const risk::DropTestSpec& spec) {
     const engine::Material& a = spec.rock.material;
     const engine::Material& b = spec.surface;
     return {0.5 * (a.friction + b.friction), 0.5 * (a.restitution + b.restitution),
             0.5 * (a.rolling_resistance + b.rolling_resistance)};
-}
-
-void print_row(std::ostream& out, const std::string& name, const SampleSummary& d,
-               const char* number) {
-    char line[256];
-    std::snprintf(line, sizeof line, "  %-44s", name.c_str());
-    out << line;
-    for (double v : {d.mean, d.standard_deviation, d.p5, d.p50, d.p95})
-        out << ' ' << fmt(number, v);
-    out << "  [" << fmt(number, d.mean_interval.lower) << ", " << fmt(number, d.mean_interval.upper)
-        << "]\n";
-}
-
-nlohmann::json summary_json(const SampleSummary& d) {
-    return {{"count", d.count},
-            {"mean", d.mean},
-            {"standard_deviation", d.standard_deviation},
-            {"p5", d.p5},
-            {"p50", d.p50},
-            {"p95", d.p95},
-            {"mean_ci95", {d.mean_interval.lower, d.mean_interval.upper}}};
-}
-
-nlohmann::json material_json(const engine::Material& m) {
-    return {{"friction", m.friction},
-            {"restitution", m.restitution},
-            {"rolling_resistance", m.rolling_resistance}};
 }
 
 nlohmann::json curve_json(const std::vector<risk::CurvePoint>& points) {
@@ -107,13 +68,6 @@ void print_identification(std::ostream& out, const DropShapeRun& run,
         << fmt("%.3f", id.consistent.lower) << " to " << fmt("%.3f", id.consistent.upper) << '\n';
 }
 
-// The shortest text that reads back as the same double.
-std::string exact(double value) {
-    char buffer[32];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-    return std::string(buffer, end);
-}
-
 }  // namespace
 
 std::string to_string(risk::CorDefinition definition) {
@@ -136,14 +90,15 @@ void print_drop_text(std::ostream& out, const DropReport& report) {
             << r.no_rebound << " without rebound (coefficients 0)\n";
         out << "  first bounce                                   mean      sd      p5     p50     "
                "p95  95% CI of mean (Student t)\n";
-        print_row(out, "kinematic COR, heights sqrt(H_r/H_i)", r.cor_height, "%7.4f");
-        print_row(out, "kinematic COR, speeds v_out/v_in", r.cor_speed, "%7.4f");
-        print_row(out, "kinetic COR, impulses P_r/P_c (1st contact)", r.cor_kinetic, "%7.4f");
-        print_row(out, "energetic COR, sqrt(E_after/E_before)", r.cor_energy, "%7.4f");
-        print_row(out, "approach speed v_in (m/s)", r.approach_speed, "%7.4g");
-        print_row(out, "rebound speed v_out (m/s)", r.rebound_speed, "%7.4g");
-        print_row(out, "rebound height H_r (m)", r.rebound_height, "%7.4g");
-        print_row(out, "normal impulse (N s)", r.normal_impulse, "%7.4g");
+        print_summary_row(out, "kinematic COR, heights sqrt(H_r/H_i)", r.cor_height, "%7.4f");
+        print_summary_row(out, "kinematic COR, speeds v_out/v_in", r.cor_speed, "%7.4f");
+        print_summary_row(out, "kinetic COR, impulses P_r/P_c (1st contact)", r.cor_kinetic,
+                          "%7.4f");
+        print_summary_row(out, "energetic COR, sqrt(E_after/E_before)", r.cor_energy, "%7.4f");
+        print_summary_row(out, "approach speed v_in (m/s)", r.approach_speed, "%7.4g");
+        print_summary_row(out, "rebound speed v_out (m/s)", r.rebound_speed, "%7.4g");
+        print_summary_row(out, "rebound height H_r (m)", r.rebound_height, "%7.4g");
+        print_summary_row(out, "normal impulse (N s)", r.normal_impulse, "%7.4g");
         if (run.identification) print_identification(out, run, report.definition);
     }
     out << "runtime: " << fmt("%.2f", report.runtime) << " s on " << report.threads << " thread"
@@ -225,56 +180,19 @@ report::Plot drop_figure(const DropReport& report) {
     plot.x_min = 0.0;
     plot.x_max = 1.0;
     plot.y_min = 0.0;
-    std::size_t colour = 0;
-    std::optional<double> target;
-    const auto identified = static_cast<std::size_t>(
-        std::count_if(report.shapes.begin(), report.shapes.end(),
-                      [](const DropShapeRun& run) { return run.identification.has_value(); }));
+    std::vector<FigureCurve> curves;
+    double target = 0.0;
     for (const DropShapeRun& run : report.shapes) {
         if (!run.identification) continue;
-        const std::string color = kColors[colour++ % std::size(kColors)];
-        report::Series mean;
-        mean.label = run.label;
-        mean.color = color;
-        report::Series lower;
-        lower.color = color;
-        report::Series upper = lower;
-        mean.marker = report::Marker::circle;
-        lower.dash = upper.dash = "4 3";
-        if (colour == 1) lower.label = "95 % CI of the mean";
-        lower.line_width = upper.line_width = 1.0;
-        for (const risk::CurvePoint& p : all_points(*run.identification)) {
-            mean.x.push_back(p.surface_restitution);
-            mean.y.push_back(p.cor.mean);
-            lower.x.push_back(p.surface_restitution);
-            lower.y.push_back(p.cor.mean_interval.lower);
-            upper.x.push_back(p.surface_restitution);
-            upper.y.push_back(p.cor.mean_interval.upper);
-        }
-        report::Series found;
-        found.color = color;
-        found.x = {run.identification->surface_restitution};
-        found.y = {run.identification->achieved.mean};
-        found.line = false;
-        found.marker = report::Marker::square;
-        found.marker_size = 7.0;
-        if (identified <= kBandedShapes) {
-            plot.series.push_back(lower);
-            plot.series.push_back(upper);
-        }
-        plot.series.push_back(mean);
-        plot.series.push_back(found);
-        target = run.identification->target;
+        const risk::RestitutionIdentification& id = *run.identification;
+        FigureCurve& curve = curves.emplace_back();
+        curve.label = run.label;
+        for (const risk::CurvePoint& p : all_points(id))
+            curve.points.push_back({p.surface_restitution, p.cor});
+        curve.identified = {id.surface_restitution, id.achieved};
+        target = id.target;
     }
-    if (target) {
-        report::Series line;
-        line.label = "target " + report::short_number(*target);
-        line.color = "#555555";
-        line.x = {0.0, 1.0};
-        line.y = {*target, *target};
-        line.dash = "8 4";
-        plot.series.push_back(line);
-    }
+    add_calibration_curves(plot, curves, target, "target " + report::short_number(target));
     return plot;
 }
 

@@ -1,8 +1,10 @@
-// `rockfall calibrate drop`: seed 001's drop test run virtually over many orientations, the
-// coefficients of restitution of the first bounce, and the surface restitution that reproduces
-// a measured mean kinematic COR (docs/calibration.md).
+// `rockfall calibrate`: the command, and `calibrate drop`: seed 001's drop test run virtually over
+// many orientations, the coefficients of restitution of the first bounce, and the surface
+// restitution that reproduces a measured mean kinematic COR (docs/calibration.md).
 
+#include "calibrate_common.hpp"
 #include "calibrate_drop.hpp"
+#include "calibrate_heap.hpp"
 #include "commands.hpp"
 #include "integer_option.hpp"
 #include "output_file.hpp"
@@ -40,23 +42,10 @@ struct DropArgs {
     std::optional<double> target_cor;
     std::string cor_from = "height";
     int curve_points = 11;
-    std::optional<std::string> svg;
-    std::optional<std::string> csv;
-    std::optional<std::string> fragment;
+    CalibrationFiles files;
     bool json = false;
     bool quiet = false;
 };
-
-// "OPTION = VALUE UNIT: must be in [LOWER, UPPER]" unless the value lies in the range.
-void require_in(const char* option, double value, const char* unit, double lower, double upper,
-                bool open_lower = false) {
-    const bool above = open_lower ? value > lower : value >= lower;
-    if (std::isfinite(value) && above && value <= upper) return;
-    std::ostringstream message;
-    message << option << " = " << value << (*unit ? " " : "") << unit << ": must be in "
-            << (open_lower ? '(' : '[') << lower << ", " << upper << ']';
-    throw std::invalid_argument(message.str());
-}
 
 void check_args(const DropArgs& args) {
     if (!(std::isfinite(args.height) && args.height > 0.0)) {
@@ -78,92 +67,18 @@ void check_args(const DropArgs& args) {
             throw std::invalid_argument(message.str());
         }
     }
-    if (!args.target_cor && (args.svg || args.fragment)) {
+    if (!args.target_cor && (args.files.svg || args.files.fragment)) {
         throw std::invalid_argument(
             "--svg and --fragment show an identification: give --target-cor");
     }
 }
 
-struct Rock {
-    std::string label;
-    engine::RockSpec spec;
-};
-
-std::string rock_label(const engine::RockRelease& release) {
-    if (!release.name.empty()) return release.name;
-    if (release.rock.shape) return "custom '" + release.rock.shape->name + "'";
-    return std::string(shapes::to_string(release.rock.kind));
-}
-
-engine::RockSpec spec_of(const scenario::ShapeResult& shape, double density) {
-    engine::RockSpec spec;
-    spec.size = shape.rock.nominal_size;
-    spec.density = density;
-    if (shape.rock.kind == shapes::RockKind::custom) {
-        spec.kind = shapes::RockKind::custom;
-        spec.shape = std::make_shared<const shapes::CustomShape>(
-            shapes::CustomShape{shape.label, shape.rock.hull});
-    } else {
-        spec.kind = shape.rock.kind;
-    }
-    return spec;
-}
-
-// The rocks to drop: every [[rocks]] entry of --scenario, or the rock (every entry of a
-// catalogue) the shape options describe, as `rockfall shape` reads them.
-std::vector<Rock> rocks_from_args(const DropArgs& args) {
-    const scenario::ShapeRequest& request = args.request;
-    std::vector<Rock> rocks;
-    if (args.scenario) {
-        if (request.file || request.kind || request.entry || request.size) {
-            throw std::invalid_argument(
-                "give the rock either as --scenario FILE (its [[rocks]]) or as FILE / --kind "
-                "with --entry and --size, not both");
-        }
-        const engine::Scenario scenario = scenario::load_scenario(*args.scenario).scenario;
-        for (const engine::RockRelease& release : scenario.rocks) {
-            rocks.push_back({rock_label(release), release.rock});
-        }
-        return rocks;
-    }
-    if (!request.file && !request.kind) {
-        throw std::invalid_argument(
-            "calibrate drop needs a rock: --kind K, a mesh FILE, a catalogue FILE [--entry NAME] "
-            "or --scenario FILE");
-    }
-    std::vector<scenario::ShapeResult> shapes;
-    if (request.file && scenario::is_catalogue(*request.file) && !request.entry && !request.kind) {
-        shapes = scenario::catalogue_shapes(request);
-    } else {
-        shapes.push_back(scenario::make_shape(request));
-    }
-    for (const scenario::ShapeResult& shape : shapes) {
-        rocks.push_back({shape.label, spec_of(shape, args.density)});
-    }
-    return rocks;
-}
-
-// The scenario rules for each rock (size, density, material, a custom kind with a hull).
-void validate_rocks(const std::vector<Rock>& rocks) {
-    for (const Rock& rock : rocks) {
-        engine::Scenario check;
-        check.rocks.front().rock = rock.spec;
-        try {
-            scenario::validate_scenario(check);
-        } catch (const scenario::ScenarioError& e) {
-            throw std::invalid_argument(rock.label + ": " + e.what());
-        }
-    }
-}
-
 void run(const DropArgs& args) {
     check_args(args);
-    for (const std::optional<std::string>& path : {args.csv, args.svg, args.fragment}) {
-        if (path) output_target(*path);
-    }
-    const std::vector<Rock> rocks = rocks_from_args(args);
-    validate_rocks(rocks);
-    if (args.fragment && rocks.size() != 1) {
+    check_calibration_files(args.files);
+    const std::vector<CalibrationRock> rocks =
+        calibration_rocks(args.request, args.scenario, args.density, "calibrate drop");
+    if (args.files.fragment && rocks.size() != 1) {
         throw std::invalid_argument(
             "--fragment holds one shape's material: " + std::to_string(rocks.size()) +
             " rocks given (pick one with --entry NAME)");
@@ -192,7 +107,7 @@ void run(const DropArgs& args) {
         progress.update(offset + done);
     };
     const auto start = std::chrono::steady_clock::now();
-    for (const Rock& rock : rocks) {
+    for (const CalibrationRock& rock : rocks) {
         DropShapeRun run;
         run.label = rock.label;
         run.spec.rock = rock.spec;
@@ -217,25 +132,16 @@ void run(const DropArgs& args) {
     report.runtime =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    if (args.csv) {
-        OutputFile file(*args.csv);
-        write_drop_csv(file.stream(), report);
-        file.commit();
-    }
-    if (args.svg) write_svg(*args.svg, drop_figure(report));
-    if (args.fragment) {
-        OutputFile file(*args.fragment);
-        file.stream() << drop_fragment(report.shapes.front(), report.definition);
-        file.commit();
-    }
+    write_calibration_files(
+        args.files, [&](std::ostream& out) { write_drop_csv(out, report); },
+        [&] { return drop_figure(report); },
+        [&] { return drop_fragment(report.shapes.front(), report.definition); });
     if (args.json) {
         std::cout << drop_json(report).dump(2) << '\n';
         return;
     }
     print_drop_text(std::cout, report);
-    if (args.csv) std::cout << "drops written to " << *args.csv << '\n';
-    if (args.svg) std::cout << "figure written to " << *args.svg << '\n';
-    if (args.fragment) std::cout << "scenario fragment written to " << *args.fragment << '\n';
+    print_calibration_files(std::cout, args.files, "drops");
 }
 
 void register_drop(CLI::App& calibrate) {
@@ -245,18 +151,11 @@ void register_drop(CLI::App& calibrate) {
         "Drop test (seed 001): a rock dropped in many random orientations onto a surface; the "
         "kinematic, kinetic and energetic coefficients of restitution of its first bounce; with "
         "--target-cor the surface restitution that reproduces a measured mean COR");
-    std::string kinds;
-    for (const std::string& name : scenario::shape_kind_names())
-        kinds += (kinds.empty() ? "" : ", ") + name;
-    cmd->add_option("FILE", args->request.file,
-                    "Mesh file, or a catalogue (every entry is dropped unless --entry)");
-    cmd->add_option("--kind", args->request.kind, "Shape: " + kinds)
-        ->check(CLI::IsMember(scenario::shape_kind_names()));
-    cmd->add_option("--entry", args->request.entry, "Catalogue entry");
+    add_shape_options(*cmd, args->request,
+                      "Mesh file, or a catalogue (every entry is dropped unless --entry)");
     cmd->add_option("--size", args->request.size,
                     "Volume-equivalent diameter (m), in [0.01, 10]; default 0.2, a mesh or "
                     "catalogue entry keeps its own");
-    cmd->add_option("--scale", args->request.scale, "Mesh units to m (mm: 0.001)");
     cmd->add_option("--scenario", args->scenario,
                     "Scenario file: every [[rocks]] entry (shape, size, density, material) is "
                     "dropped");
@@ -294,9 +193,9 @@ void register_drop(CLI::App& calibrate) {
                     "Points of the curve over surface restitution [0, 1], >= 2")
         ->capture_default_str()
         ->transform(integer_in(2, 101, "a number of curve points"));
-    cmd->add_option("--svg", args->svg, "Write the curve (the paper's Fig. 11) as SVG");
-    cmd->add_option("--csv", args->csv, "Write every drop's measurements as CSV");
-    cmd->add_option("--fragment", args->fragment,
+    cmd->add_option("--svg", args->files.svg, "Write the curve (the paper's Fig. 11) as SVG");
+    cmd->add_option("--csv", args->files.csv, "Write every drop's measurements as CSV");
+    cmd->add_option("--fragment", args->files.fragment,
                     "Write the identified [materials.slope] as a scenario fragment (TOML) for "
                     "extends");
     cmd->add_flag("--json", args->json, "Print one JSON document instead of the summary");
@@ -313,6 +212,7 @@ void register_calibrate(CLI::App& app) {
         "parameters from measured results");
     cmd->require_subcommand(1);
     register_drop(*cmd);
+    register_heap(*cmd);
 }
 
 }  // namespace rockfall::app

@@ -137,6 +137,13 @@ struct World::Impl {
     std::unique_ptr<TerrainShape> lining_sheet_mesh;
     std::vector<std::unique_ptr<btRigidBody>> lining_bodies;
     std::vector<RockBody> rocks;
+    // Kinematic compounds of boxes (a funnel); a removed one has no body.
+    struct Kinematic {
+        std::vector<std::unique_ptr<btBoxShape>> boxes;
+        std::unique_ptr<btCompoundShape> shape;
+        std::unique_ptr<btRigidBody> body;
+    };
+    std::vector<Kinematic> kinematics;
     btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
 
     Impl(const shapes::Slope& slope, std::size_t rock_count)
@@ -200,6 +207,9 @@ struct World::Impl {
         }
         for (std::unique_ptr<btRigidBody>& body : lining_bodies) {
             world.removeRigidBody(body.get());
+        }
+        for (Kinematic& kinematic : kinematics) {
+            if (kinematic.body) world.removeRigidBody(kinematic.body.get());
         }
     }
 
@@ -376,6 +386,47 @@ void World::remove_static_box(int box) {
     if (solid.body) {
         impl_->world.removeRigidBody(solid.body.get());
         solid.body.reset();
+    }
+}
+
+int World::add_kinematic_boxes(const std::vector<shapes::OrientedBox>& boxes,
+                               const Material& material, const Vec3& position) {
+    Impl::Kinematic& kinematic = impl_->kinematics.emplace_back();
+    kinematic.shape = std::make_unique<btCompoundShape>(true, static_cast<int>(boxes.size()));
+    for (const shapes::OrientedBox& box : boxes) {
+        kinematic.boxes.push_back(make_box_shape(box));
+        kinematic.shape->addChildShape(to_bt(box.rotation, box.center),
+                                       kinematic.boxes.back().get());
+    }
+    const btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, kinematic.shape.get());
+    kinematic.body = std::make_unique<btRigidBody>(info);
+    kinematic.body->setCollisionFlags(kinematic.body->getCollisionFlags() |
+                                      btCollisionObject::CF_KINEMATIC_OBJECT);
+    kinematic.body->setActivationState(DISABLE_DEACTIVATION);
+    btTransform place;
+    place.setIdentity();
+    place.setOrigin(to_bt(position));
+    kinematic.body->setWorldTransform(place);
+    kinematic.body->setInterpolationWorldTransform(place);
+    attach_material(*kinematic.body, material, impl_->materials.emplace_back());
+    impl_->world.addRigidBody(kinematic.body.get());
+    return static_cast<int>(impl_->kinematics.size()) - 1;
+}
+
+void World::move_kinematic(int body, const Vec3& position) {
+    btRigidBody& kinematic = *impl_->kinematics[static_cast<std::size_t>(body)].body;
+    // Bullet's saveKinematicState takes the velocity from the interpolation transform (where
+    // the body was) to the world transform (where it will be) over the step.
+    btTransform place = kinematic.getWorldTransform();
+    place.setOrigin(to_bt(position));
+    kinematic.setWorldTransform(place);
+}
+
+void World::remove_kinematic(int body) {
+    Impl::Kinematic& kinematic = impl_->kinematics[static_cast<std::size_t>(body)];
+    if (kinematic.body) {
+        impl_->world.removeRigidBody(kinematic.body.get());
+        kinematic.body.reset();
     }
 }
 

@@ -1,5 +1,6 @@
 #include "risk/drop_test.hpp"
 
+#include "risk/parallel.hpp"
 #include "validation.hpp"
 
 #include "engine/simulation.hpp"
@@ -214,29 +215,6 @@ DropMeasurement run_drop(const DropTestSpec& spec, std::int64_t index) {
     return m;
 }
 
-SampleSummary sample_summary(const std::vector<double>& sample, double confidence) {
-    detail::require(!sample.empty(), "distribution of an empty sample");
-    detail::require(confidence > 0.0 && confidence < 1.0,
-                    "confidence = " + std::to_string(confidence) + ": must be in (0, 1)");
-    SampleSummary d;
-    d.count = static_cast<std::int64_t>(sample.size());
-    d.mean = mean(sample);
-    std::vector<double> sorted = sample;
-    std::sort(sorted.begin(), sorted.end());
-    d.p5 = quantile(sorted, 0.05);
-    d.p50 = quantile(sorted, 0.50);
-    d.p95 = quantile(sorted, 0.95);
-    d.mean_interval = {d.mean, d.mean};
-    if (d.count >= 2) {
-        d.standard_deviation = standard_deviation(sample);
-        const double half =
-            student_t_quantile(1.0 - 0.5 * (1.0 - confidence), static_cast<double>(d.count - 1)) *
-            d.standard_deviation / std::sqrt(static_cast<double>(d.count));
-        d.mean_interval = {d.mean - half, d.mean + half};
-    }
-    return d;
-}
-
 namespace {
 
 DropTestResult summarize(std::vector<DropMeasurement> drops) {
@@ -288,35 +266,6 @@ std::vector<DropTestResult> run_tests(const DropTestSpec& spec, const std::vecto
     return results;
 }
 
-// Where the band [lower, upper] of the mean, over points sorted by restitution, contains the
-// target: the first crossing of the upper bound to the last crossing of the lower bound.
-Interval consistent_range(const std::vector<CurvePoint>& points, double target) {
-    const auto cross = [&](std::size_t i, double (*bound)(const CurvePoint&)) {
-        const CurvePoint& a = points[i];
-        const CurvePoint& b = points[i + 1];
-        const double fa = bound(a) - target;
-        const double fb = bound(b) - target;
-        const double t = fa == fb ? 0.0 : fa / (fa - fb);
-        return a.surface_restitution + t * (b.surface_restitution - a.surface_restitution);
-    };
-    const auto upper = [](const CurvePoint& p) { return p.cor.mean_interval.upper; };
-    const auto lower = [](const CurvePoint& p) { return p.cor.mean_interval.lower; };
-    Interval range{points.front().surface_restitution, points.back().surface_restitution};
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        if (upper(points[i]) >= target) {
-            range.lower = i == 0 ? points[0].surface_restitution : cross(i - 1, upper);
-            break;
-        }
-    }
-    for (std::size_t j = points.size(); j-- > 0;) {
-        if (lower(points[j]) <= target) {
-            range.upper = j + 1 == points.size() ? points[j].surface_restitution : cross(j, lower);
-            break;
-        }
-    }
-    return range;
-}
-
 }  // namespace
 
 DropTestResult run_drop_test(const DropTestSpec& spec, int threads, const DropProgress& progress) {
@@ -336,83 +285,44 @@ RestitutionIdentification identify_surface_restitution(const DropTestSpec& spec,
     const auto matched = [&](const DropTestResult& r) {
         return options.definition == CorDefinition::height ? r.cor_height : r.cor_speed;
     };
-    const auto point = [&](double e, const DropTestResult& r) {
-        return CurvePoint{e, 0.5 * (e + spec.rock.material.restitution), matched(r)};
+    const auto point = [&](const SearchPoint& p) {
+        return CurvePoint{p.parameter, 0.5 * (p.parameter + spec.rock.material.restitution),
+                          p.value};
     };
-    RestitutionIdentification id;
-    id.target = target;
     std::vector<double> values;
     for (int i = 0; i < options.curve_points; ++i) {
         values.push_back(static_cast<double>(i) / (options.curve_points - 1));
     }
-    std::int64_t total = spec.count * (options.curve_points + options.max_iterations);
-    const std::vector<DropTestResult> curve =
-        run_tests(spec, values, options.threads, 0, total, progress);
-    for (std::size_t i = 0; i < values.size(); ++i) id.curve.push_back(point(values[i], curve[i]));
-
-    // The first bracket where the mean crosses the target (the curve rises with restitution).
-    std::size_t b = 1;
-    while (b < id.curve.size() &&
-           (id.curve[b - 1].cor.mean - target) * (id.curve[b].cor.mean - target) > 0.0)
-        ++b;
-    if (b == id.curve.size()) {
-        double lo = 1.0, hi = 0.0;
-        for (const CurvePoint& p : id.curve) {
-            lo = std::min(lo, p.cor.mean);
-            hi = std::max(hi, p.cor.mean);
-        }
+    const std::int64_t total = spec.count * (options.curve_points + options.max_iterations);
+    std::int64_t done = 0;
+    const SearchEvaluator evaluate = [&](const std::vector<double>& restitutions) {
+        const std::vector<DropTestResult> results =
+            run_tests(spec, restitutions, options.threads, done, total, progress);
+        done += spec.count * static_cast<std::int64_t>(restitutions.size());
+        std::vector<SampleSummary> out;
+        for (const DropTestResult& r : results) out.push_back(matched(r));
+        return out;
+    };
+    const UnreachableTarget unreachable = [&](double lo, double hi) {
         std::ostringstream message;
         message << "target_cor = " << target << ": must be in [" << lo << ", " << hi
                 << "], the mean COR over surface restitution 0 to 1 for this rock (its own "
                    "restitution "
                 << spec.rock.material.restitution << " enters the contact's mean)";
         throw std::invalid_argument(message.str());
-    }
-    // Illinois regula falsi (Dowell and Jarratt 1971) on the bracket [lo, hi]: the residual of
-    // an end that survives twice in a row is halved, so the bracket closes from both sides.
-    CurvePoint lo = id.curve[b - 1];
-    CurvePoint hi = id.curve[b];
-    double f_lo = lo.cor.mean - target;
-    double f_hi = hi.cor.mean - target;
-    CurvePoint best = std::abs(f_lo) < std::abs(f_hi) ? lo : hi;
-    int kept = 0;  // -1: lo survived the last step, +1: hi did
-    std::int64_t done = spec.count * options.curve_points;
-    for (int it = 0; it < options.max_iterations && best.cor.mean != target &&
-                     hi.surface_restitution - lo.surface_restitution > options.tolerance;
-         ++it) {
-        const double e = hi.surface_restitution -
-                         f_hi * (hi.surface_restitution - lo.surface_restitution) / (f_hi - f_lo);
-        const CurvePoint p =
-            point(e, run_tests(spec, {e}, options.threads, done, total, progress).front());
-        done += spec.count;
-        id.refinements.push_back(p);
-        const double f = p.cor.mean - target;
-        if (std::abs(f) < std::abs(best.cor.mean - target)) best = p;
-        if (f == 0.0) break;
-        if ((f < 0.0) == (f_lo < 0.0)) {
-            lo = p;
-            f_lo = f;
-            if (kept == 1) f_hi *= 0.5;
-            kept = 1;
-        } else {
-            hi = p;
-            f_hi = f;
-            if (kept == -1) f_lo *= 0.5;
-            kept = -1;
-        }
-    }
+    };
+    const ParameterSearch search = search_parameter(
+        values, target, {options.tolerance, options.max_iterations}, evaluate, unreachable);
     if (progress) progress(done, done);
+    RestitutionIdentification id;
+    id.target = target;
+    const CurvePoint best = point(search.best);
     id.surface_restitution = best.surface_restitution;
     id.contact_restitution = best.contact_restitution;
     id.achieved = best.cor;
-    const auto by_restitution = [](const CurvePoint& x, const CurvePoint& y) {
-        return x.surface_restitution < y.surface_restitution;
-    };
-    std::sort(id.refinements.begin(), id.refinements.end(), by_restitution);
-    std::vector<CurvePoint> all = id.curve;
-    all.insert(all.end(), id.refinements.begin(), id.refinements.end());
-    std::stable_sort(all.begin(), all.end(), by_restitution);
-    id.consistent = consistent_range(all, target);
+    id.consistent = search.consistent;
+    for (const SearchPoint& p : search.curve) id.curve.push_back(point(p));
+    for (const SearchPoint& p : search.refinements) id.refinements.push_back(point(p));
     return id;
 }
 

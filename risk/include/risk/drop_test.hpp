@@ -6,12 +6,12 @@
 
 #include "engine/outcome.hpp"
 #include "engine/scenario.hpp"
-#include "risk/parallel.hpp"
+#include "risk/parameter_search.hpp"
+#include "risk/sample_summary.hpp"
 #include "risk/statistics.hpp"
 #include "shapes/rocks.hpp"
 
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 namespace rockfall::risk {
@@ -101,25 +101,6 @@ DropMeasurement measure_drop(const std::vector<engine::RockState>& states,
 /// measures it. Throws std::runtime_error when the engine reports a numerical failure.
 DropMeasurement run_drop(const DropTestSpec& spec, std::int64_t index);
 
-/// A sample's distribution: mean, spread, percentiles and a confidence interval of the mean.
-struct SampleSummary {
-    /// Sample size.
-    std::int64_t count = 0;
-    /// Mean and sample standard deviation (0 for one value), in the sample's unit.
-    double mean = 0.0;
-    double standard_deviation = 0.0;
-    /// 5th, 50th and 95th percentiles (type 7, risk::quantile).
-    double p5 = 0.0;
-    double p50 = 0.0;
-    double p95 = 0.0;
-    /// Student t interval of the mean, mean -/+ t(1 - (1 - c) / 2, n - 1) s / sqrt(n); the
-    /// mean itself for one value.
-    Interval mean_interval;
-};
-
-/// The distribution of a sample (not empty) with a `confidence` in (0, 1) interval of its mean.
-SampleSummary sample_summary(const std::vector<double>& sample, double confidence = 0.95);
-
 /// Every drop of one test and the distributions of its outputs over the orientations.
 struct DropTestResult {
     /// The drops, in index order.
@@ -139,7 +120,7 @@ struct DropTestResult {
 };
 
 /// Called on the calling thread with drops done and drops planned (the plan may grow).
-using DropProgress = ParallelProgress;
+using DropProgress = BatchProgress;
 
 /// Runs the `spec.count` drops of a checked spec on `threads` (>= 1) worker threads; drop i's
 /// result depends only on (spec, i), whatever the thread count.

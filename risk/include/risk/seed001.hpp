@@ -4,7 +4,7 @@
 /// travel), and how simulated values compare with them: each cell's mean over several runs
 /// against the published value with a relative tolerance, and the paper's trends.
 
-#include "risk/drop_test.hpp"
+#include "risk/sample_summary.hpp"
 
 #include <array>
 #include <cstdint>

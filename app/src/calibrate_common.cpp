@@ -1,0 +1,235 @@
+#include "calibrate_common.hpp"
+
+#include "output_file.hpp"
+#include "report/text_format.hpp"
+#include "scenario/scenario_file.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+namespace rockfall::app {
+namespace {
+
+using report::fmt;
+
+const char* const kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+                               "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"};
+// More curves than this get no confidence band in the figure (it would hide the curves).
+constexpr std::size_t kBandedCurves = 3;
+
+std::string rock_label(const engine::RockRelease& release) {
+    if (!release.name.empty()) return release.name;
+    if (release.rock.shape) return "custom '" + release.rock.shape->name + "'";
+    return std::string(shapes::to_string(release.rock.kind));
+}
+
+engine::RockSpec spec_of(const scenario::ShapeResult& shape, double density) {
+    engine::RockSpec spec;
+    spec.size = shape.rock.nominal_size;
+    spec.density = density;
+    if (shape.rock.kind == shapes::RockKind::custom) {
+        spec.kind = shapes::RockKind::custom;
+        spec.shape = std::make_shared<const shapes::CustomShape>(
+            shapes::CustomShape{shape.label, shape.rock.hull});
+    } else {
+        spec.kind = shape.rock.kind;
+    }
+    return spec;
+}
+
+// The scenario rules for each rock (size, density, material, a custom kind with a hull).
+void validate_rocks(const std::vector<CalibrationRock>& rocks) {
+    for (const CalibrationRock& rock : rocks) {
+        engine::Scenario check;
+        check.rocks.front().rock = rock.spec;
+        try {
+            scenario::validate_scenario(check);
+        } catch (const scenario::ScenarioError& e) {
+            throw std::invalid_argument(rock.label + ": " + e.what());
+        }
+    }
+}
+
+}  // namespace
+
+void require_in(const char* option, double value, const char* unit, double lower, double upper,
+                bool open_lower) {
+    const bool above = open_lower ? value > lower : value >= lower;
+    if (std::isfinite(value) && above && value <= upper) return;
+    std::ostringstream message;
+    message << option << " = " << value << (*unit ? " " : "") << unit << ": must be in "
+            << (open_lower ? '(' : '[') << lower << ", " << upper << ']';
+    throw std::invalid_argument(message.str());
+}
+
+std::vector<CalibrationRock> calibration_rocks(const scenario::ShapeRequest& request,
+                                               const std::optional<std::string>& scenario_file,
+                                               double density, const std::string& command) {
+    std::vector<CalibrationRock> rocks;
+    if (scenario_file) {
+        if (request.file || request.kind || request.entry || request.size) {
+            throw std::invalid_argument(
+                "give the rock either as --scenario FILE (its [[rocks]]) or as FILE / --kind "
+                "with --entry and --size, not both");
+        }
+        const engine::Scenario scenario = scenario::load_scenario(*scenario_file).scenario;
+        for (const engine::RockRelease& release : scenario.rocks) {
+            rocks.push_back({rock_label(release), release.rock});
+        }
+        validate_rocks(rocks);
+        return rocks;
+    }
+    if (!request.file && !request.kind) {
+        throw std::invalid_argument(command +
+                                    " needs a rock: --kind K, a mesh FILE, a catalogue FILE "
+                                    "[--entry NAME]" +
+                                    (command == "calibrate drop" ? " or --scenario FILE" : ""));
+    }
+    std::vector<scenario::ShapeResult> shapes;
+    if (request.file && scenario::is_catalogue(*request.file) && !request.entry && !request.kind) {
+        shapes = scenario::catalogue_shapes(request);
+    } else {
+        shapes.push_back(scenario::make_shape(request));
+    }
+    for (const scenario::ShapeResult& shape : shapes) {
+        rocks.push_back({shape.label, spec_of(shape, density)});
+    }
+    validate_rocks(rocks);
+    return rocks;
+}
+
+void check_calibration_files(const CalibrationFiles& files) {
+    for (const std::optional<std::string>& path : {files.csv, files.svg, files.fragment}) {
+        if (path) output_target(*path);
+    }
+}
+
+void write_calibration_files(const CalibrationFiles& files,
+                             const std::function<void(std::ostream&)>& csv,
+                             const std::function<report::Plot()>& figure,
+                             const std::function<std::string()>& fragment) {
+    if (files.csv) {
+        OutputFile file(*files.csv);
+        csv(file.stream());
+        file.commit();
+    }
+    if (files.svg) write_svg(*files.svg, figure());
+    if (files.fragment) {
+        OutputFile file(*files.fragment);
+        file.stream() << fragment();
+        file.commit();
+    }
+}
+
+void print_calibration_files(std::ostream& out, const CalibrationFiles& files,
+                             const std::string& csv_what) {
+    if (files.csv) out << csv_what << " written to " << *files.csv << '\n';
+    if (files.svg) out << "figure written to " << *files.svg << '\n';
+    if (files.fragment) out << "scenario fragment written to " << *files.fragment << '\n';
+}
+
+void add_shape_options(CLI::App& cmd, scenario::ShapeRequest& request,
+                       const std::string& file_help) {
+    std::string kinds;
+    for (const std::string& name : scenario::shape_kind_names())
+        kinds += (kinds.empty() ? "" : ", ") + name;
+    cmd.add_option("FILE", request.file, file_help);
+    cmd.add_option("--kind", request.kind, "Shape: " + kinds)
+        ->check(CLI::IsMember(scenario::shape_kind_names()));
+    cmd.add_option("--entry", request.entry, "Catalogue entry");
+    cmd.add_option("--scale", request.scale, "Mesh units to m (mm: 0.001)");
+}
+
+std::string material_text(const engine::Material& m) {
+    return "friction " + report::short_number(m.friction) + ", restitution " +
+           report::short_number(m.restitution) + ", rolling resistance " +
+           report::short_number(m.rolling_resistance);
+}
+
+nlohmann::json material_json(const engine::Material& m) {
+    return {{"friction", m.friction},
+            {"restitution", m.restitution},
+            {"rolling_resistance", m.rolling_resistance}};
+}
+
+nlohmann::json summary_json(const risk::SampleSummary& d) {
+    return {{"count", d.count},
+            {"mean", d.mean},
+            {"standard_deviation", d.standard_deviation},
+            {"p5", d.p5},
+            {"p50", d.p50},
+            {"p95", d.p95},
+            {"mean_ci95", {d.mean_interval.lower, d.mean_interval.upper}}};
+}
+
+void print_summary_row(std::ostream& out, const std::string& name, const risk::SampleSummary& d,
+                       const char* number) {
+    char line[256];
+    std::snprintf(line, sizeof line, "  %-44s", name.c_str());
+    out << line;
+    for (double v : {d.mean, d.standard_deviation, d.p5, d.p50, d.p95})
+        out << ' ' << fmt(number, v);
+    out << "  [" << fmt(number, d.mean_interval.lower) << ", " << fmt(number, d.mean_interval.upper)
+        << "]\n";
+}
+
+std::string exact(double value) {
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+    return std::string(buffer, end);
+}
+
+void add_calibration_curves(report::Plot& plot, const std::vector<FigureCurve>& curves,
+                            double target, const std::string& target_label) {
+    std::size_t colour = 0;
+    for (const FigureCurve& curve : curves) {
+        const std::string color = kColors[colour++ % std::size(kColors)];
+        report::Series mean;
+        mean.label = curve.label;
+        mean.color = color;
+        report::Series lower;
+        lower.color = color;
+        report::Series upper = lower;
+        mean.marker = report::Marker::circle;
+        lower.dash = upper.dash = "4 3";
+        if (colour == 1) lower.label = "95 % CI of the mean";
+        lower.line_width = upper.line_width = 1.0;
+        for (const risk::SearchPoint& p : curve.points) {
+            mean.x.push_back(p.parameter);
+            mean.y.push_back(p.value.mean);
+            lower.x.push_back(p.parameter);
+            lower.y.push_back(p.value.mean_interval.lower);
+            upper.x.push_back(p.parameter);
+            upper.y.push_back(p.value.mean_interval.upper);
+        }
+        report::Series found;
+        found.color = color;
+        found.x = {curve.identified.parameter};
+        found.y = {curve.identified.value.mean};
+        found.line = false;
+        found.marker = report::Marker::square;
+        found.marker_size = 7.0;
+        if (curves.size() <= kBandedCurves) {
+            plot.series.push_back(lower);
+            plot.series.push_back(upper);
+        }
+        plot.series.push_back(mean);
+        plot.series.push_back(found);
+    }
+    if (!curves.empty()) {
+        report::Series line;
+        line.label = target_label;
+        line.color = "#555555";
+        line.x = {plot.x_min.value_or(0.0), plot.x_max.value_or(1.0)};
+        line.y = {target, target};
+        line.dash = "8 4";
+        plot.series.push_back(line);
+    }
+}
+
+}  // namespace rockfall::app
