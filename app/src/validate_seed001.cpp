@@ -83,12 +83,11 @@ seed001::RunRecord run_case(const Seed001Options& options, const Case& c, std::u
 
     const shapes::Slope slope(scenario.slope);
     const engine::PressureMap map = engine::pressure_map(*scenario.wall_cells, slope, outcome);
-    seed001::RunRecord record{c.cluster, c.angle_deg, c.shape, seed, {}, elapsed.count(),
-                              outcome.simulated_time};
+    seed001::RunRecord record{c.cluster,       c.angle_deg,           c.shape, seed, {},
+                              elapsed.count(), outcome.simulated_time};
     // The paper's speeds are its camera's (frames every 0.04 s); forces its pad's readings.
-    const report::MarkedRocks marked =
-        report::marked_rocks(outcome, series.series(), &map, report::default_camera_interval,
-                             {1.4});
+    const report::MarkedRocks marked = report::marked_rocks(outcome, series.series(), &map,
+                                                            report::default_camera_interval, {1.4});
     for (const report::MarkedRock& rock : marked.rocks) {
         record.rocks.push_back({rock.name, rock.sampled_peak_force.value_or(nan),
                                 rock.wall_hits > 0 ? rock.peak_force : nan,

@@ -1,6 +1,5 @@
 #include "risk/drop_test.hpp"
 
-#include "risk/parallel.hpp"
 #include "validation.hpp"
 
 #include "engine/simulation.hpp"

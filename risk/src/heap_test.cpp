@@ -1,8 +1,8 @@
 #include "risk/heap_test.hpp"
 
-#include "risk/parallel.hpp"
 #include "validation.hpp"
 
+#include "risk/parallel.hpp"
 #include "risk/random_release.hpp"
 #include "shapes/grading.hpp"
 
