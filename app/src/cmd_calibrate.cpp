@@ -9,6 +9,7 @@
 #include "integer_option.hpp"
 #include "output_file.hpp"
 #include "progress.hpp"
+#include "threads.hpp"
 #include "scenario/scenario_file.hpp"
 #include "scenario/shape_source.hpp"
 
@@ -86,9 +87,7 @@ void run(const DropArgs& args) {
     DropReport report;
     report.definition =
         args.cor_from == "speed" ? risk::CorDefinition::speed : risk::CorDefinition::height;
-    report.threads = args.threads > 0
-                         ? args.threads
-                         : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    report.threads = thread_count(args.threads);
     risk::IdentificationOptions options;
     options.definition = report.definition;
     options.curve_points = args.curve_points;

@@ -6,6 +6,7 @@
 #include "integer_option.hpp"
 #include "output_file.hpp"
 #include "progress.hpp"
+#include "threads.hpp"
 
 #include "risk/heap_test.hpp"
 
@@ -90,9 +91,7 @@ void run(HeapArgs args) {
             " rocks given (pick one with --entry NAME)");
     }
     HeapReport report;
-    report.threads = args.threads > 0
-                         ? args.threads
-                         : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    report.threads = thread_count(args.threads);
     risk::FrictionOptions options;
     options.curve_points = args.curve_points;
     options.friction_min = args.friction_range[0];
