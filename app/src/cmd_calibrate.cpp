@@ -9,9 +9,9 @@
 #include "integer_option.hpp"
 #include "output_file.hpp"
 #include "progress.hpp"
-#include "threads.hpp"
 #include "scenario/scenario_file.hpp"
 #include "scenario/shape_source.hpp"
+#include "threads.hpp"
 
 #include "risk/drop_test.hpp"
 
