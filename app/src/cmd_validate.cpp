@@ -54,8 +54,11 @@ void run_validate(const ValidateArgs& args) {
     options.max_time = args.max_time;
     options.physical = args.rows != "numerical";
     options.numerical = args.rows != "physical";
-    const std::int64_t planned = static_cast<std::int64_t>(args.seeds) * 6 *
-                                 ((options.physical ? 1 : 0) + (options.numerical ? 4 : 0));
+    namespace seed001 = risk::seed001;
+    const std::size_t cases = seed001::clusters.size() * seed001::angles_deg.size();
+    const std::size_t per_case =
+        (options.physical ? 1 : 0) + (options.numerical ? seed001::shapes.size() : 0);
+    const auto planned = static_cast<std::int64_t>(cases * per_case) * args.seeds;
     Progress progress(std::cerr, progress_mode_for_stderr(args.quiet || args.json), planned,
                       "runs");
     options.progress = [&progress](std::int64_t done, std::int64_t) { progress.update(done); };
