@@ -4,6 +4,8 @@
 #include "report/text_format.hpp"
 #include "scenario/scenario_file.hpp"
 
+#include "db/soil_run.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -69,7 +71,8 @@ void require_in(const char* option, double value, const char* unit, double lower
 
 std::vector<CalibrationRock> calibration_rocks(const scenario::ShapeRequest& request,
                                                const std::optional<std::string>& scenario_file,
-                                               double density, const std::string& command) {
+                                               double density, const std::string& command,
+                                               std::string* scenario_text) {
     std::vector<CalibrationRock> rocks;
     if (scenario_file) {
         if (request.file || request.kind || request.entry || request.size) {
@@ -77,7 +80,9 @@ std::vector<CalibrationRock> calibration_rocks(const scenario::ShapeRequest& req
                 "give the rock either as --scenario FILE (its [[rocks]]) or as FILE / --kind "
                 "with --entry and --size, not both");
         }
-        const engine::Scenario scenario = scenario::load_scenario(*scenario_file).scenario;
+        const scenario::ScenarioFile file = scenario::load_scenario(*scenario_file);
+        if (scenario_text) *scenario_text = file.text;
+        const engine::Scenario& scenario = file.scenario;
         for (const engine::RockRelease& release : scenario.rocks) {
             rocks.push_back({rock_label(release), release.rock});
         }
@@ -103,16 +108,48 @@ std::vector<CalibrationRock> calibration_rocks(const scenario::ShapeRequest& req
     return rocks;
 }
 
+void add_calibration_file_options(CLI::App& cmd, CalibrationFiles& files,
+                                  const CalibrationFileHelp& help) {
+    cmd.add_option("--svg", files.svg, help.svg);
+    cmd.add_option("--csv", files.csv, help.csv);
+    cmd.add_option("--fragment", files.fragment, help.fragment);
+    cmd.add_option("--db", files.db,
+                   "Write every result (shapes, measurements, curve, identification) into a new "
+                   "results database (docs/database.md)");
+    cmd.add_flag("--json", files.json, "Print one JSON document instead of the summary");
+    cmd.add_flag("--quiet", files.quiet, "No progress display");
+}
+
+nlohmann::json option_settings(const CLI::App& cmd) {
+    nlohmann::json settings = nlohmann::json::object();
+    for (const CLI::Option* option : cmd.get_options()) {
+        const std::string name = option->get_single_name();
+        if (name == "help" || name == "help-all") continue;
+        nlohmann::json& value = settings[name];
+        if (option->get_expected_max() == 0) {
+            value = option->count() > 0;
+        } else if (option->count() > 0) {
+            const std::vector<std::string>& given = option->results();
+            value = given.size() == 1 ? nlohmann::json(given.front()) : nlohmann::json(given);
+        } else if (!option->get_default_str().empty()) {
+            value = option->get_default_str();
+        }
+    }
+    return settings;
+}
+
 void check_calibration_files(const CalibrationFiles& files) {
     for (const std::optional<std::string>& path : {files.csv, files.svg, files.fragment}) {
         if (path) output_target(*path);
     }
+    if (files.db) db::check_new_database(*files.db);
 }
 
 void write_calibration_files(const CalibrationFiles& files,
                              const std::function<void(std::ostream&)>& csv,
                              const std::function<report::Plot()>& figure,
-                             const std::function<std::string()>& fragment) {
+                             const std::function<std::string()>& fragment,
+                             const std::function<db::CalibrationRecord()>& record) {
     if (files.csv) {
         OutputFile file(*files.csv);
         csv(file.stream());
@@ -124,6 +161,7 @@ void write_calibration_files(const CalibrationFiles& files,
         file.stream() << fragment();
         file.commit();
     }
+    if (files.db) db::write_calibration(*files.db, record());
 }
 
 void print_calibration_files(std::ostream& out, const CalibrationFiles& files,
@@ -131,6 +169,7 @@ void print_calibration_files(std::ostream& out, const CalibrationFiles& files,
     if (files.csv) out << csv_what << " written to " << *files.csv << '\n';
     if (files.svg) out << "figure written to " << *files.svg << '\n';
     if (files.fragment) out << "scenario fragment written to " << *files.fragment << '\n';
+    if (files.db) out << "results database written to " << *files.db << '\n';
 }
 
 void add_shape_options(CLI::App& cmd, scenario::ShapeRequest& request,

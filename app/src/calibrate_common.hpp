@@ -5,6 +5,7 @@
 #include "report/svg_plot.hpp"
 #include "scenario/shape_source.hpp"
 
+#include "db/calibration_run.hpp"
 #include "engine/scenario.hpp"
 #include "risk/parameter_search.hpp"
 #include "risk/sample_summary.hpp"
@@ -35,25 +36,50 @@ void require_in(const char* option, double value, const char* unit, double lower
 /// rock (every entry of a catalogue without --entry) the shape options describe, as `rockfall
 /// shape` reads them, at `density` (kg/m3). `command` names the command in the message when no
 /// rock is given. Each rock passes the scenario rules.
+/// `scenario_text`, when given, receives the scenario file's resolved text (empty without one).
 std::vector<CalibrationRock> calibration_rocks(const scenario::ShapeRequest& request,
                                                const std::optional<std::string>& scenario_file,
-                                               double density, const std::string& command);
+                                               double density, const std::string& command,
+                                               std::string* scenario_text = nullptr);
 
-/// Where a calibration command writes its files (each optional).
+/// Where a calibration command writes its files (each optional) and how it prints.
 struct CalibrationFiles {
     std::optional<std::string> csv;
     std::optional<std::string> svg;
     std::optional<std::string> fragment;
+    /// A new results database (db/calibration_run.hpp).
+    std::optional<std::string> db;
+    bool json = false;
+    bool quiet = false;
 };
 
-/// Checks every given path by the output-file rule before the experiment runs.
+/// Help texts of a command's --svg, --csv and --fragment.
+struct CalibrationFileHelp {
+    std::string svg;
+    std::string csv;
+    std::string fragment;
+};
+
+/// Adds --svg, --csv, --fragment, --db, --json and --quiet to `cmd`.
+void add_calibration_file_options(CLI::App& cmd, CalibrationFiles& files,
+                                  const CalibrationFileHelp& help);
+
+/// Every option of `cmd` (but --help and --help-all) by its long name without dashes: the values
+/// given, or the default as --help shows it (null without one); a flag as true or false. What a
+/// calibration database stores as the run's settings.
+nlohmann::json option_settings(const CLI::App& cmd);
+
+/// Checks every given path by the output-file rule (the database by db::check_new_database)
+/// before the experiment runs.
 void check_calibration_files(const CalibrationFiles& files);
 
-/// Writes the given files: the CSV by `csv`, the figure `figure()`, the fragment `fragment()`.
+/// Writes the given files: the CSV by `csv`, the figure `figure()`, the fragment `fragment()`,
+/// the database of `record()`.
 void write_calibration_files(const CalibrationFiles& files,
                              const std::function<void(std::ostream&)>& csv,
                              const std::function<report::Plot()>& figure,
-                             const std::function<std::string()>& fragment);
+                             const std::function<std::string()>& fragment,
+                             const std::function<db::CalibrationRecord()>& record);
 
 /// "WHAT written to PATH" for every file written (`csv_what` names the CSV's rows).
 void print_calibration_files(std::ostream& out, const CalibrationFiles& files,

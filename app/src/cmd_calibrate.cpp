@@ -5,12 +5,14 @@
 #include "calibrate_common.hpp"
 #include "calibrate_drop.hpp"
 #include "calibrate_heap.hpp"
+#include "calibration_record.hpp"
 #include "commands.hpp"
 #include "integer_option.hpp"
 #include "output_file.hpp"
 #include "progress.hpp"
 #include "scenario/scenario_file.hpp"
 #include "scenario/shape_source.hpp"
+#include "sweep_record.hpp"
 #include "threads.hpp"
 
 #include "risk/drop_test.hpp"
@@ -44,8 +46,6 @@ struct DropArgs {
     std::string cor_from = "height";
     int curve_points = 11;
     CalibrationFiles files;
-    bool json = false;
-    bool quiet = false;
 };
 
 void check_args(const DropArgs& args) {
@@ -74,11 +74,13 @@ void check_args(const DropArgs& args) {
     }
 }
 
-void run(const DropArgs& args) {
+void run(const DropArgs& args, const CLI::App& cmd) {
     check_args(args);
     check_calibration_files(args.files);
-    const std::vector<CalibrationRock> rocks =
-        calibration_rocks(args.request, args.scenario, args.density, "calibrate drop");
+    CalibrationRun record_run;
+    record_run.started_at = utc_now();
+    const std::vector<CalibrationRock> rocks = calibration_rocks(
+        args.request, args.scenario, args.density, "calibrate drop", &record_run.scenario_text);
     if (args.files.fragment && rocks.size() != 1) {
         throw std::invalid_argument(
             "--fragment holds one shape's material: " + std::to_string(rocks.size()) +
@@ -88,14 +90,14 @@ void run(const DropArgs& args) {
     report.definition =
         args.cor_from == "speed" ? risk::CorDefinition::speed : risk::CorDefinition::height;
     report.threads = thread_count(args.threads);
-    risk::IdentificationOptions options;
+    risk::RestitutionSearchOptions options;
     options.definition = report.definition;
     options.curve_points = args.curve_points;
     options.threads = report.threads;
 
     const std::int64_t per_rock =
         args.count * (1 + (args.target_cor ? options.curve_points + options.max_iterations : 0));
-    Progress progress(std::cerr, progress_mode_for_stderr(args.quiet || args.json),
+    Progress progress(std::cerr, progress_mode_for_stderr(args.files.quiet || args.files.json),
                       per_rock * static_cast<std::int64_t>(rocks.size()), "drops");
     // The plan counts every refinement step an identification may take; it usually stops
     // earlier, so the bar ends at the drops actually run.
@@ -131,11 +133,14 @@ void run(const DropArgs& args) {
     report.runtime =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+    record_run.finished_at = utc_now();
+    record_run.settings = option_settings(cmd);
     write_calibration_files(
         args.files, [&](std::ostream& out) { write_drop_csv(out, report); },
         [&] { return drop_figure(report); },
-        [&] { return drop_fragment(report.shapes.front(), report.definition); });
-    if (args.json) {
+        [&] { return drop_fragment(report.shapes.front(), report.definition); },
+        [&] { return drop_record(report, record_run); });
+    if (args.files.json) {
         std::cout << drop_json(report).dump(2) << '\n';
         return;
     }
@@ -192,14 +197,11 @@ void register_drop(CLI::App& calibrate) {
                     "Points of the curve over surface restitution [0, 1], >= 2")
         ->capture_default_str()
         ->transform(integer_in(2, 101, "a number of curve points"));
-    cmd->add_option("--svg", args->files.svg, "Write the curve (the paper's Fig. 11) as SVG");
-    cmd->add_option("--csv", args->files.csv, "Write every drop's measurements as CSV");
-    cmd->add_option("--fragment", args->files.fragment,
-                    "Write the identified [materials.slope] as a scenario fragment (TOML) for "
-                    "extends");
-    cmd->add_flag("--json", args->json, "Print one JSON document instead of the summary");
-    cmd->add_flag("--quiet", args->quiet, "No progress display");
-    cmd->callback([args] { run(*args); });
+    add_calibration_file_options(
+        *cmd, args->files,
+        {"Write the curve (the paper's Fig. 11) as SVG", "Write every drop's measurements as CSV",
+         "Write the identified [materials.slope] as a scenario fragment (TOML) for extends"});
+    cmd->callback([args, cmd] { run(*args, *cmd); });
 }
 
 }  // namespace

@@ -3,9 +3,11 @@
 
 #include "calibrate_common.hpp"
 #include "calibrate_heap.hpp"
+#include "calibration_record.hpp"
 #include "integer_option.hpp"
 #include "output_file.hpp"
 #include "progress.hpp"
+#include "sweep_record.hpp"
 #include "threads.hpp"
 
 #include "risk/heap_test.hpp"
@@ -34,8 +36,6 @@ struct HeapArgs {
     int curve_points = 6;
     int threads = 0;
     CalibrationFiles files;
-    bool json = false;
-    bool quiet = false;
 };
 
 void check_args(const HeapArgs& args) {
@@ -79,10 +79,12 @@ void check_args(const HeapArgs& args) {
     }
 }
 
-void run(HeapArgs args) {
+void run(HeapArgs args, const CLI::App& cmd) {
     check_args(args);
     check_calibration_files(args.files);
     if (args.sheet) args.spec.heap.sheet = shapes::PerforatedSheet{};
+    CalibrationRun record_run;
+    record_run.started_at = utc_now();
     std::vector<CalibrationRock> rocks =
         calibration_rocks(args.request, std::nullopt, args.density, "calibrate heap");
     if (args.files.fragment && rocks.size() != 1) {
@@ -111,7 +113,7 @@ void run(HeapArgs args) {
     const std::int64_t count = args.spec.count;
     const std::int64_t per_rock =
         count * (1 + (args.target_angle ? options.curve_points + options.max_iterations : 0));
-    Progress progress(std::cerr, progress_mode_for_stderr(args.quiet || args.json),
+    Progress progress(std::cerr, progress_mode_for_stderr(args.files.quiet || args.files.json),
                       per_rock * static_cast<std::int64_t>(rocks.size()), "heaps");
     std::int64_t offset = 0;
     std::int64_t last = 0;
@@ -135,10 +137,13 @@ void run(HeapArgs args) {
     report.runtime =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+    record_run.finished_at = utc_now();
+    record_run.settings = option_settings(cmd);
     write_calibration_files(
         args.files, [&](std::ostream& out) { write_heap_csv(out, report); },
-        [&] { return heap_figure(report); }, [&] { return heap_fragment(report.shapes.front()); });
-    if (args.json) {
+        [&] { return heap_figure(report); }, [&] { return heap_fragment(report.shapes.front()); },
+        [&] { return heap_record(report, record_run); });
+    if (args.files.json) {
         std::cout << heap_json(report).dump(2) << '\n';
         return;
     }
@@ -239,14 +244,11 @@ void register_heap(CLI::App& calibrate) {
                     "Points of the curve over the friction range, >= 2")
         ->capture_default_str()
         ->transform(integer_in(2, 101, "a number of curve points"));
-    cmd->add_option("--svg", args->files.svg, "Write the curve (the paper's Fig. 8) as SVG");
-    cmd->add_option("--csv", args->files.csv, "Write every heap's angle per plane as CSV");
-    cmd->add_option("--fragment", args->files.fragment,
-                    "Write the identified [cluster.material] as a scenario fragment (TOML) for "
-                    "extends");
-    cmd->add_flag("--json", args->json, "Print one JSON document instead of the summary");
-    cmd->add_flag("--quiet", args->quiet, "No progress display");
-    cmd->callback([args] { run(*args); });
+    add_calibration_file_options(
+        *cmd, args->files,
+        {"Write the curve (the paper's Fig. 8) as SVG", "Write every heap's angle per plane as CSV",
+         "Write the identified [cluster.material] as a scenario fragment (TOML) for extends"});
+    cmd->callback([args, cmd] { run(*args, *cmd); });
 }
 
 }  // namespace rockfall::app

@@ -2,6 +2,7 @@
 
 #include "commands.hpp"
 #include "output_file.hpp"
+#include "report/calibration_summary.hpp"
 #include "report/curve_figure.hpp"
 #include "report/fit_figure.hpp"
 #include "report/query_report.hpp"
@@ -66,11 +67,17 @@ db::ResultsDb open_database(const QueryArgs& args) {
 }
 
 void run_summary(const QueryArgs& args) {
-    // A soil database has a summary of its own; every other query is about rock sweeps.
+    // Soil and calibration databases have summaries of their own; every other query is about
+    // rock sweeps.
     const db::ResultsDb database = db::ResultsDb::open_any(args.database, false);
     if (database.kind() == db::RunKind::soil_flow) {
         report::write_soil_summary(std::cout, format_of(args), args.database,
                                    db::read_soil_run(database));
+        return;
+    }
+    if (database.kind() == db::RunKind::drop_test || database.kind() == db::RunKind::heap_test) {
+        report::write_calibration_summary(std::cout, format_of(args), args.database,
+                                          db::read_calibration(database));
         return;
     }
     report::write_summary(std::cout, format_of(args), args.database,

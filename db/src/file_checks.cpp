@@ -276,4 +276,18 @@ void publish(const TemporaryFile& temporary, const fs::path& target) {
     }
 }
 
+std::string held_by(RunKind kind) {
+    switch (kind) {
+        case RunKind::soil_flow:
+            return "a soil flow (written by `rockfall soil --db`)";
+        case RunKind::drop_test:
+            return "a drop test (written by `rockfall calibrate drop --db`)";
+        case RunKind::heap_test:
+            return "a heap test (written by `rockfall calibrate heap --db`)";
+        case RunKind::rock_sweep:
+            break;
+    }
+    return "a rock sweep (written by `rockfall sweep`)";
+}
+
 }  // namespace rockfall::db

@@ -17,6 +17,10 @@ void require_creatable(const std::filesystem::path& path);
 /// and, when `writable`, the file and its directory are writable.
 void require_database_file(const std::filesystem::path& path, bool writable);
 
+/// What a database of `kind` holds and which command writes it ("a soil flow (written by
+/// `rockfall soil --db`)"), for messages.
+std::string held_by(RunKind kind);
+
 /// Throws DatabaseError (failure) when `db` was opened read-only; `what` is the operation.
 void require_writable(const ResultsDb& db, const std::string& what);
 

@@ -92,6 +92,20 @@ void check_identity(sqlite3* db, const fs::path& path) {
     }
 }
 
+// A calibration database's own tables (files written before they existed hold none).
+void check_calibration_tables(sqlite3* db, const fs::path& path) {
+    sql::Statement exists(db, path, "SELECT 1 FROM sqlite_schema WHERE name = ?");
+    for (const std::string_view name : schema::calibration_objects) {
+        exists.reset();
+        exists.bind_text(1, name);
+        if (!exists.step()) {
+            throw DatabaseError(path.string() + " lacks its table '" + std::string(name) +
+                                    "': the file is damaged; restore it from a copy",
+                                Kind::bad_file);
+        }
+    }
+}
+
 std::int64_t stored_version(sqlite3* db, const fs::path& path) {
     return pragma_integer(db, path, "user_version");
 }
@@ -137,7 +151,8 @@ void check_integrity(sqlite3* db, const fs::path& path) {
 RunKind read_kind(sqlite3* db, const fs::path& path) {
     sql::Statement select(db, path, "SELECT kind FROM run WHERE id = 1");
     const std::string name = select.step() ? select.text(0) : std::string();
-    for (const RunKind kind : {RunKind::rock_sweep, RunKind::soil_flow}) {
+    for (const RunKind kind :
+         {RunKind::rock_sweep, RunKind::soil_flow, RunKind::drop_test, RunKind::heap_test}) {
         if (name == to_string(kind)) return kind;
     }
     throw DatabaseError(path.string() + " holds no run of a kind this build knows (run.kind = '" +
@@ -236,6 +251,8 @@ void build_database(const fs::path& temporary, const fs::path& path, const RunRe
     sql::exec(db, path, std::string(schema::definition), "creating the tables");
     sql::exec(db, path, std::string(schema::views), "creating the views");
     sql::exec(db, path, std::string(schema::soil_definition), "creating the soil tables");
+    sql::exec(db, path, std::string(schema::calibration_definition),
+              "creating the calibration tables");
     insert_run(db, path, run, kind);
     if (fill) fill(db);
     transaction.commit();
@@ -244,7 +261,17 @@ void build_database(const fs::path& temporary, const fs::path& path, const RunRe
 }
 
 std::string_view to_string(RunKind kind) {
-    return kind == RunKind::soil_flow ? "soil_flow" : "rock_sweep";
+    switch (kind) {
+        case RunKind::soil_flow:
+            return "soil_flow";
+        case RunKind::drop_test:
+            return "drop_test";
+        case RunKind::heap_test:
+            return "heap_test";
+        case RunKind::rock_sweep:
+            break;
+    }
+    return "rock_sweep";
 }
 
 void create_database_file(const fs::path& path, const RunRecord& run, RunKind kind,
@@ -315,11 +342,14 @@ ResultsDb ResultsDb::open_checked(const fs::path& path, bool writable, bool any_
     open_connection(connection, path, immutable ? immutable_uri(path) : path.string(),
                     SQLITE_OPEN_READONLY | (immutable ? SQLITE_OPEN_URI : 0));
     check_identity(connection.db, path);
-    if (!any_kind && read_kind(connection.db, path) != RunKind::rock_sweep) {
-        throw DatabaseError(path.string() +
-                                " holds a soil flow (written by `rockfall soil --db`), not a rock "
-                                "sweep: `rockfall query " +
-                                path.string() + " summary` and `history` read it",
+    const RunKind kind = read_kind(connection.db, path);
+    if (kind == RunKind::drop_test || kind == RunKind::heap_test) {
+        check_calibration_tables(connection.db, path);
+    }
+    if (!any_kind && kind != RunKind::rock_sweep) {
+        throw DatabaseError(path.string() + " holds " + held_by(kind) +
+                                ", not a rock sweep: `rockfall query " + path.string() +
+                                " summary` reads it",
                             Kind::bad_file);
     }
     const bool version1 = stored_version(connection.db, path) == 1;

@@ -7,14 +7,15 @@ namespace rockfall::db::schema {
 const std::string_view definition = R"sql(
 CREATE TABLE run (
     id INTEGER PRIMARY KEY CHECK (id = 1),  -- one run per file
-    kind TEXT NOT NULL CHECK (kind IN ('rock_sweep', 'soil_flow')),
+    kind TEXT NOT NULL CHECK (kind IN ('rock_sweep', 'soil_flow', 'drop_test', 'heap_test')),
     tool_version TEXT NOT NULL,
     build TEXT NOT NULL,
     scenario_name TEXT NOT NULL,
     scenario_text TEXT NOT NULL,            -- the complete resolved scenario (TOML)
     scenario_hash TEXT NOT NULL,            -- hash of scenario_text, hex
     seed INTEGER NOT NULL,                  -- uint64 run seed stored as its int64 bit pattern
-    method TEXT NOT NULL,                   -- monte_carlo or latin_hypercube; mpm (soil)
+    method TEXT NOT NULL,                   -- monte_carlo or latin_hypercube; mpm (soil);
+                                            -- drop_test, heap_test (calibration)
     samples_planned INTEGER NOT NULL CHECK (samples_planned >= 0),
     stop_rule TEXT NOT NULL,
     settings_json TEXT NOT NULL,

@@ -21,6 +21,17 @@ extern const std::string_view version1_adapter;
 /// version; filled when run.kind = 'soil_flow'.
 extern const std::string_view soil_definition;
 
+/// CREATE TABLE statements of the calibration tables (calibration_schema.cpp), in every file
+/// of this version written since they were added; filled when run.kind is 'drop_test' or
+/// 'heap_test'.
+extern const std::string_view calibration_definition;
+
+/// The calibration tables; open_any() checks they exist in a calibration database (older files
+/// of this version lack them and hold no calibration).
+inline constexpr std::array<std::string_view, 6> calibration_objects = {
+    "calibration_shapes", "calibration_identified", "calibration_curve", "drop_tests", "heap_tests",
+    "heap_planes"};
+
 /// Tables and views every database of this version has; open() checks they exist.
 /// (A version-1 file has all but rocks.)
 inline constexpr std::array<std::string_view, 16> objects = {

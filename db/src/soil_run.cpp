@@ -223,9 +223,9 @@ void write_soil_run(const fs::path& path, const SoilRunRecord& record) {
 
 SoilRunRecord read_soil_run(const ResultsDb& db) {
     if (db.kind() != RunKind::soil_flow) {
-        throw DatabaseError(db.path().string() +
-                                " holds a rock sweep (written by `rockfall sweep`), not a soil "
-                                "flow: give a database written by `rockfall soil --db`",
+        throw DatabaseError(db.path().string() + " holds " + held_by(db.kind()) +
+                                ", not a soil flow: give a database written by `rockfall soil "
+                                "--db`",
                             Kind::bad_file);
     }
     SoilRunRecord record;

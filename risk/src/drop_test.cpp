@@ -274,7 +274,7 @@ DropTestResult run_drop_test(const DropTestSpec& spec, int threads, const DropPr
 }
 
 RestitutionIdentification identify_surface_restitution(const DropTestSpec& spec, double target,
-                                                       const IdentificationOptions& options,
+                                                       const RestitutionSearchOptions& options,
                                                        const DropProgress& progress) {
     check_drop_spec(spec);
     require_number("target_cor", target, 0.0, 1.0, true);

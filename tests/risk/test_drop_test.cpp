@@ -178,7 +178,7 @@ TEST_CASE("identification recovers a known surface restitution from its own mean
     spec.rock.material.restitution = 0.45;
     spec.surface.restitution = 0.45;
     const double target = risk::run_drop_test(spec, 2).cor_height.mean;
-    risk::IdentificationOptions options;
+    risk::RestitutionSearchOptions options;
     options.threads = 2;
     options.tolerance = 1e-4;
     spec.surface.restitution = 0.3;  // where the test would start: not the answer

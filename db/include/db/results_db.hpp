@@ -57,9 +57,11 @@ class DatabaseError : public std::runtime_error {
 enum class RunKind {
     rock_sweep,  ///< a Monte Carlo sweep of rocks (`rockfall sweep`): samples and their outcomes
     soil_flow,   ///< one soil flow (`rockfall soil --db`): the soil tables (db/soil_run.hpp)
+    drop_test,  ///< `rockfall calibrate drop --db`: the calibration tables (db/calibration_run.hpp)
+    heap_test,  ///< `rockfall calibrate heap --db`: the calibration tables
 };
 
-/// The name stored in run.kind: "rock_sweep" or "soil_flow".
+/// The name stored in run.kind: "rock_sweep", "soil_flow", "drop_test" or "heap_test".
 std::string_view to_string(RunKind kind);
 
 /// The run a database holds (one per file).

@@ -143,7 +143,7 @@ struct CurvePoint {
 };
 
 /// Options of an identification.
-struct IdentificationOptions {
+struct RestitutionSearchOptions {
     /// Coefficient to match.
     CorDefinition definition = CorDefinition::height;
     /// Curve points, evenly spaced over surface restitution [0, 1] (>= 2).
@@ -180,7 +180,7 @@ struct RestitutionIdentification {
 /// Throws std::invalid_argument when the target lies outside what the curve reaches (naming
 /// the range), or is not in (0, 1).
 RestitutionIdentification identify_surface_restitution(const DropTestSpec& spec, double target,
-                                                       const IdentificationOptions& options,
+                                                       const RestitutionSearchOptions& options,
                                                        const DropProgress& progress = {});
 
 }  // namespace rockfall::risk
