@@ -4,6 +4,7 @@
 #include "contact_settings.hpp"
 #include "coulomb_solver.hpp"
 #include "hull_contacts.hpp"
+#include "rock_world.hpp"
 #include "sheet_contacts.hpp"
 #include "terrain_shape.hpp"
 
@@ -144,7 +145,7 @@ struct World::Impl {
         std::unique_ptr<btRigidBody> body;
     };
     std::vector<Kinematic> kinematics;
-    btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+    RockDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
 
     Impl(const shapes::Slope& slope, std::size_t rock_count)
         : configuration(pool_sizes(rock_count)),

@@ -84,13 +84,16 @@ TEST_CASE("a single layer of rocks is a heap of angle 0", "[heap]") {
 
 TEST_CASE("the angle of repose grows with the rock friction", "[heap][verification]") {
     // Spheres with rolling resistance 0.1 (cheap to simulate; the paper's clumps resist
-    // rolling by their shape), two heaps per friction with the same seeds. Heaps of 100 rocks
-    // are one to three rocks high, so one plane's fit scatters by 5-12 deg: the angle is
-    // checked between the ends of the range, the heap height at every step.
+    // rolling by their shape), eight heaps per friction with the same seeds. Heaps of 100 rocks
+    // are one to three rocks high, so one heap's angle scatters by about 6 deg: the angle is
+    // checked between the ends of the range, the heap height at every step. With two heaps per
+    // friction (as before the pair margins of engine/src/rock_world.hpp) the difference of the
+    // means had a spread of about 6 deg against the 5 deg asked, and the check held or failed by
+    // the draw; with eight the spread is about 3 deg.
     risk::HeapTestSpec spec = small_heap(shapes::RockKind::sphere, 100);
     spec.heap.rock.material.rolling_resistance = 0.1;
     spec.heap.max_fill_time = 2.0;
-    spec.count = 2;
+    spec.count = 8;
     std::vector<risk::HeapTestResult> results;
     for (const double friction : {0.05, 0.3, 1.0}) {
         spec.heap.rock.material.friction = friction;
