@@ -14,6 +14,8 @@ foreach(module shapes engine mpm risk db scenario report)
     if(TARGET rockfall_${module})
         list(APPEND ROCKFALL_INSTALLED_MODULES ${module})
         set_target_properties(rockfall_${module} PROPERTIES EXPORT_NAME ${module})
+        # The public headers are C++20: a consumer compiles them at that level.
+        target_compile_features(rockfall_${module} INTERFACE cxx_std_20)
         install(TARGETS rockfall_${module} EXPORT rockfallTargets
             ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT Development
             LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT Development)

@@ -48,3 +48,4 @@ done
 grep -qF "rockfall (= $version)" <<<"$(dpkg-deb -f "$dev" Depends)" ||
     fail "$(basename "$dev") does not depend on rockfall (= $version)"
 echo "debian_package.sh: $(basename "$program") and $(basename "$dev") checked"
+rm -rf "$work/_CPack_Packages"

@@ -28,7 +28,7 @@ if grep -rlF -e "$source/" -e "$build/" "$(dirname "$config")"; then
 fi
 "$prefix/bin/rockfall" --version
 
-"$cmake" -S "$consumer" -B "$work/build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" "$@" \
+"$cmake" -S "$consumer" -B "$work/build" -DCMAKE_PREFIX_PATH="$prefix" "$@" \
     >"$work/configure.log" 2>&1 || {
     cat "$work/configure.log" >&2
     fail "the consumer does not configure against $prefix"
@@ -40,3 +40,6 @@ fi
 "$work/build/sphere_volume"
 cd "$work"
 "$work/build/simulate_scenario" "$prefix/share/rockfall/samples/seed_slope.toml"
+# The prefix holds the unstripped static libraries (a few hundred MB): kept only on failure.
+cd /
+rm -rf "$work"
