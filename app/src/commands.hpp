@@ -52,5 +52,8 @@ void register_calibrate(CLI::App& app);
 void register_validate(CLI::App& app);
 /// `rockfall merge OUT.db SHARD.db...`: shards of one sweep into one database.
 void register_merge(CLI::App& app);
+/// Hidden `--man-page` and `--bash-completion`: rockfall(1) and the bash completion, written
+/// from every command registered on `app` by the time it parses (cmd_help_man.cpp).
+void register_help_files(CLI::App& app);
 
 }  // namespace rockfall::app

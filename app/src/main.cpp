@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
     rockfall::app::register_calibrate(app);
     rockfall::app::register_validate(app);
     rockfall::app::check_seed_options(app);
+    rockfall::app::register_help_files(app);
     // CLI11 reads an unknown first word as a stray positional and answers "A subcommand is
     // required"; name what was typed and list the commands instead.
     if (argc > 1 && argv[1][0] != '-') {
