@@ -25,8 +25,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The samples an installed program ships (PREFIX/share/rockfall/samples beside PREFIX/bin), or
+// else those of the source tree it was built from.
+std::string default_samples() {
+    std::error_code error;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+    if (!error) {
+        const fs::path installed = exe.parent_path().parent_path() / "share/rockfall/samples";
+        if (fs::is_directory(installed, error)) return installed.string();
+    }
+    return ROCKFALL_SAMPLES_DIR;
+}
+
 struct ValidateArgs {
-    std::string samples = ROCKFALL_SAMPLES_DIR;
+    std::string samples;
     int seeds = 3;
     std::uint64_t first_seed = 1;
     int threads = 0;
@@ -38,12 +50,13 @@ struct ValidateArgs {
 };
 
 void run_validate(const ValidateArgs& args) {
+    const std::string samples = args.samples.empty() ? default_samples() : args.samples;
     Seed001Options options;
-    options.flume_dir = fs::path(args.samples) / "seed_flume";
-    options.catalogue = fs::path(args.samples) / "rocks" / "catalogue.toml";
+    options.flume_dir = fs::path(samples) / "seed_flume";
+    options.catalogue = fs::path(samples) / "rocks" / "catalogue.toml";
     for (const fs::path& needed : {options.flume_dir / "flume.toml", options.catalogue}) {
         if (!fs::is_regular_file(needed))
-            throw std::invalid_argument("--samples " + args.samples + ": no " +
+            throw std::invalid_argument("--samples " + samples + ": no " +
                                         needed.generic_string() +
                                         " (give the folder of rockfall's samples)");
     }
@@ -96,8 +109,9 @@ void register_validate(CLI::App& app) {
         "Reproduce published results: seed 001's Table 2 (peak wall forces of the marked rocks) "
         "and the marked rocks' speeds at 1.4 m, over several cluster seeds");
     cmd->add_option("--samples", args->samples,
-                    "Folder of rockfall's samples (seed_flume/ and rocks/catalogue.toml)")
-        ->capture_default_str();
+                    "Folder of rockfall's samples (seed_flume/ and rocks/catalogue.toml); default: "
+                    "PREFIX/share/rockfall/samples of an installed program, else the source "
+                    "tree's samples/");
     cmd->add_option("--seeds", args->seeds, "Cluster seeds per case")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
