@@ -45,7 +45,7 @@ constexpr LineStyle envelope_style{"identified formula \u03b1 \u03b2 P(\u03bb)",
 constexpr LineStyle preset_style{"seed 000 preset for the shape", "2 3", 1.2, 1.0};
 constexpr LineStyle mean_style{"mean regression", "", 1.5, 1.0};
 constexpr LineStyle upper_style{"mean + 1\u03c3 regression", "7 4", 1.5, 1.0};
-constexpr LineStyle formula_style{"envelope: the formula at the shape's median mass", "", 2.0, 1.0};
+constexpr LineStyle formula_style{"formula at the median mass", "", 2.0, 1.0};
 
 Series styled(const LineStyle& style, const char* color) {
     Series s;

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string_view>
 
 namespace rockfall::report::html {
 namespace {
@@ -26,9 +27,9 @@ caption { text-align: left; font-weight: bold; padding: 4px 0; caption-side: top
 th, td { border: 1px solid #c8c8c8; padding: 3px 7px; vertical-align: top; }
 th { background: #eef3f8; text-align: left; }
 td.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
-td.code { font-family: "DejaVu Sans Mono", monospace; font-size: 11.5px; }
 table.items th { width: 12em; }
 table.items td { white-space: normal; }
+pre.commands { background: #fbfbfb; }
 pre { font-family: "DejaVu Sans Mono", monospace; font-size: 11.5px; background: #f6f6f6;
       border: 1px solid #ddd; padding: 8px; white-space: pre-wrap; overflow-wrap: anywhere; }
 figure { margin: 10px 0 18px; }
@@ -43,9 +44,9 @@ footer { margin: 36px 0 24px; padding-top: 6px; border-top: 1px solid #ccc; font
     body { font-size: 10.5pt; max-width: none; padding: 0; }
     h2 { margin-top: 0; }
     section { break-before: page; }
-    table, figure, tr, pre.short { break-inside: avoid; }
+    h2, h3, caption { break-after: avoid; }
+    figure, tr, pre.commands { break-inside: avoid; }
     table { font-size: 8.5pt; }
-    td.code { font-size: 7.5pt; }
     pre { font-size: 7.5pt; }
     a { color: inherit; text-decoration: none; }
 }
@@ -104,11 +105,11 @@ std::string table(const Table& t) {
     for (const std::vector<std::string>& row : t.rows) {
         out << "<tr>";
         for (std::size_t c = 0; c < row.size(); ++c) {
-            const bool code = static_cast<int>(c) == t.code_column;
-            out << (code     ? "<td class=\"code\">"
-                    : c == 0 ? "<td>"
-                             : "<td class=\"n\">")
-                << escaped(row[c]) << "</td>";
+            // Numbers right-aligned: a cell that starts like one ("12.3", "-", "4.5e+05 to").
+            const bool number =
+                c > 0 && !row[c].empty() &&
+                std::string_view("0123456789-+.").find(row[c][0]) != std::string_view::npos;
+            out << (number ? "<td class=\"n\">" : "<td>") << escaped(row[c]) << "</td>";
         }
         out << "</tr>\n";
     }
@@ -126,9 +127,13 @@ std::string items(const std::vector<std::pair<std::string, std::string>>& rows) 
     return out.str();
 }
 
-std::string preformatted(const std::string& text) { return "<pre>" + escaped(text) + "</pre>\n"; }
+std::string preformatted(const std::string& text, const std::string& css_class) {
+    return (css_class.empty() ? "<pre>" : "<pre class=\"" + css_class + "\">") + escaped(text) +
+           "</pre>\n";
+}
 
-std::string figure(const Plot& plot, int number, const std::string& caption) {
+std::string figure(Plot plot, int number, const std::string& caption) {
+    plot.id_prefix = "fig" + std::to_string(number) + "-";
     return "<figure>\n" + render_svg(plot) + "<figcaption>Figure " + std::to_string(number) + ". " +
            escaped(caption) + "</figcaption>\n</figure>\n";
 }
@@ -136,12 +141,6 @@ std::string figure(const Plot& plot, int number, const std::string& caption) {
 std::string value(double v, const std::string& unit) {
     if (std::isnan(v)) return "-";
     return fmt("%.4g", v) + (unit.empty() ? "" : " " + unit);
-}
-
-std::string with_interval(double v, double lower, double upper, const std::string& unit,
-                          const std::string& confidence) {
-    return value(v, unit) + " (" + confidence + " % CI " + value(lower, unit) + " to " +
-           value(upper, unit) + ")";
 }
 
 std::string confidence_text(double confidence) { return percent_text(confidence); }

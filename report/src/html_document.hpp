@@ -52,29 +52,25 @@ struct Table {
     std::string caption;
     std::vector<std::string> header;
     std::vector<std::vector<std::string>> rows;
-    /// Index of a column shown as code (commands), or -1.
-    int code_column = -1;
 };
 
-/// The table as HTML; the first column left-aligned, the others right-aligned numbers (the
-/// code column left-aligned).
+/// The table as HTML: cells that start like a number right-aligned (not in the first column),
+/// text left-aligned.
 std::string table(const Table& t);
 
 /// Label-value rows (provenance), values plain text.
 std::string items(const std::vector<std::pair<std::string, std::string>>& rows);
 
-/// Preformatted text (a scenario file), escaped.
-std::string preformatted(const std::string& text);
+/// Preformatted text (a scenario file, commands), escaped, with an optional CSS class
+/// ("commands": kept on one page in print).
+std::string preformatted(const std::string& text, const std::string& css_class = "");
 
-/// An inline SVG figure (render_svg of the plot) numbered `number` with its caption.
-std::string figure(const Plot& plot, int number, const std::string& caption);
+/// An inline SVG figure (render_svg of the plot, its ids prefixed "figN-") numbered `number`
+/// with its caption.
+std::string figure(Plot plot, int number, const std::string& caption);
 
 /// A value with 4 significant digits and its unit ("12.35 m"), "-" for NaN.
 std::string value(double v, const std::string& unit);
-
-/// A value and its interval: "12.35 m (95 % CI 11.2 to 13.1 m)"; an open bound prints "-".
-std::string with_interval(double v, double lower, double upper, const std::string& unit,
-                          const std::string& confidence);
 
 /// A confidence as a percentage ("95").
 std::string confidence_text(double confidence);

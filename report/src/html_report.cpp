@@ -52,11 +52,16 @@ Section provenance(const db::RunRecord& run, const Items& counts, const std::str
         rows.emplace_back("release zones", zones);
     }
     rows.emplace_back("other settings (JSON)", run.settings_json);
-    return {"provenance", "Provenance",
-            html::items(rows) +
-                html::subheading("Scenario as run (resolved TOML, " +
-                                 std::to_string(run.scenario_text.size()) + " bytes, hash " +
-                                 run.scenario_hash + ")") +
+    rows.emplace_back("scenario text", "in the appendix, as run");
+    return {"provenance", "Provenance", html::items(rows)};
+}
+
+// The scenario's full text, last: pages of TOML would push the results back.
+Section scenario_appendix(const db::RunRecord& run, const std::string& rerun) {
+    return {"scenario", "Appendix: scenario as run",
+            html::paragraph("The complete resolved scenario (TOML, " +
+                            std::to_string(run.scenario_text.size()) + " bytes, hash " +
+                            run.scenario_hash + ") the run stored; " + rerun + ".") +
                 html::preformatted(run.scenario_text)};
 }
 
@@ -120,13 +125,11 @@ std::optional<Section> convergence(SweepContext& c, const std::vector<db::Stored
     Band reach = band("P(reach >= " + x + ")", "#d62728");
     Series key = wall.lower;
     key.color = "#555555";
-    key.label = html::confidence_text(c.options.confidence) + " % " +
-                std::string(db::to_string(c.options.method)) + " interval";
+    key.label = html::proportion_interval_text(c);
     html::Table table{
         "Running estimates at a few sample counts",
         {"samples", "share of samples with a rock on the wall", "P(reach >= " + x + ")"},
-        {},
-        -1};
+        {}};
     // Table rows at 10, 25, 50 and 100 % of the samples (those that are distinct).
     std::vector<std::int64_t> rows;
     for (const std::int64_t percent : {10, 25, 50, 100}) {
@@ -210,8 +213,7 @@ std::vector<Section> soil_sections(const db::SoilRunRecord& r, const std::string
              {"peak of the load " + filter_text(r), html::value(r.peak_force_filtered, force)},
              {"peak of a single step's load", html::value(r.peak_force_step, force)},
              {"total impulse", html::value(r.impulse, per_metre ? "N s/m" : "N s")},
-             {"wall distance past the toe", html::value(r.wall_distance_from_toe, "m")}},
-            -1};
+             {"wall distance past the toe", html::value(r.wall_distance_from_toe, "m")}}};
         sections.push_back(
             {"wall-load", "Wall load",
              html::table(peaks) +
@@ -221,12 +223,13 @@ std::vector<Section> soil_sections(const db::SoilRunRecord& r, const std::string
     html::Table deposit{"Deposit",
                         {"quantity", "value"},
                         {{"runout past the toe", html::value(r.runout_past_toe, "m")},
-                         {"runout x", html::value(r.runout_x, "m")}},
-                        -1};
+                         {"runout x", html::value(r.runout_x, "m")}}};
     if (!r.motion.empty()) {
         deposit.rows.push_back({"final front x", html::value(r.motion.back().front_x, "m")});
     }
     sections.push_back({"deposit", "Deposit", html::table(deposit)});
+    sections.push_back(
+        scenario_appendix(r.run, "saved as a file, `rockfall soil FILE` runs it again"));
     return sections;
 }
 
@@ -253,7 +256,7 @@ std::string proportion_interval_text(const SweepContext& c) {
 
 std::string percentile_interval_text(const SweepContext& c) {
     return confidence_text(c.options.confidence) +
-           " % distribution-free interval (order statistics, Conover 1999)";
+           " % distribution-free interval from order statistics, Conover 1999";
 }
 
 }  // namespace html
@@ -327,6 +330,8 @@ void write_html_report(std::ostream& out, const db::ResultsDb& db,
           html::worst_section(c)}) {
         if (section) sections.push_back(std::move(*section));
     }
+    sections.push_back(scenario_appendix(
+        s.run, "`rockfall simulate --from DB --sample i` replays any sample from it"));
     c.left_out.emplace_back("pressure map of the wall's cells",
                             "a results database stores no wall-cell loads; `rockfall simulate` "
                             "draws the map of one run");

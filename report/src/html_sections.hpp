@@ -39,7 +39,7 @@ struct SweepContext {
 
 /// "95 % Wilson score interval" or "95 % Clopper-Pearson exact interval".
 std::string proportion_interval_text(const SweepContext& context);
-/// "95 % distribution-free interval (order statistics, Conover 1999)".
+/// "95 % distribution-free interval from order statistics, Conover 1999".
 std::string percentile_interval_text(const SweepContext& context);
 
 /// Reach exceedance curves by shape and by zone, with P(reach >= x) at the convergence

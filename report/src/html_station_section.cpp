@@ -32,8 +32,7 @@ Table percentile_table(const SweepContext& c, const db::StationValues& s) {
     Table t{"Percentiles at " + station_name(s) + " over the " + std::to_string(s.reached) +
                 " rocks that crossed it",
             {"percentile"},
-            {},
-            -1};
+            {}};
     std::vector<db::PercentileGroup> groups;
     for (const Measure& m : measures) {
         const std::vector<double>& values = s.*m.values;
@@ -74,8 +73,7 @@ Table design_table(const SweepContext& c, const std::vector<db::StationValues>& 
         "UNI 11211-4 design values at each station",
         {"station", "rocks", "v_t = p" + p + " speed (m/s)", "h_t = p" + p + " bounce height (m)",
          "v_d (m/s)", "h_d (m)", "block mass m (kg)", "m_d (kg)", "E_d (kJ)"},
-        {},
-        -1};
+        {}};
     for (const db::StationValues& s : stations) {
         if (s.speeds.empty() || s.bounce_heights.empty()) continue;
         const double mass = o.design_mass ? *o.design_mass : s.max_mass;
@@ -98,8 +96,7 @@ std::optional<Section> stations_section(SweepContext& c) {
     // The summary's shares, as `rockfall query DB summary` prints them: Wilson intervals.
     Table shares{"Rocks past each station, " + c.confidence + " % Wilson score interval",
                  {"station", "distance past the toe (m)", "rocks past it"},
-                 {},
-                 -1};
+                 {}};
     for (const db::StationShare& s : c.summary.stations) {
         shares.rows.push_back({std::to_string(s.station), fmt("%g", s.distance_from_toe),
                                share_text(s.reached, c.confidence)});

@@ -12,6 +12,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <string_view>
 
 namespace rockfall::report::html {
 namespace {
@@ -19,6 +20,13 @@ namespace {
 const std::vector<double> levels = {0.5, 0.9, 0.95, 0.99};
 
 std::string level_text(double p) { return fmt("p%g", 100.0 * p); }
+
+// A quantity's name in words: "peak_force" -> "peak force".
+std::string words(std::string_view name) {
+    std::string text(name);
+    for (char& ch : text) ch = ch == '_' ? ' ' : ch;
+    return text;
+}
 
 bool has_points(const db::ExceedanceCurve& curve) {
     for (const db::CurveGroup& g : curve.groups) {
@@ -48,14 +56,14 @@ std::optional<Section> exceedance_section(SweepContext& c, double distance) {
     }
     const HtmlReportOptions& o = c.options;
     const std::string x = value(distance, "m");
+    const db::PercentileRow& median = c.summary.reach.groups[0].rows[0];
     std::string body = paragraph(
         "P(reach >= x): the share of rocks whose furthest horizontal distance past the toe is at "
         "least x, with the " +
-        proportion_interval_text(c) + " (dashed). Median reach over all rocks: " +
-        with_interval(c.summary.reach.groups[0].rows[0].value,
-                      c.summary.reach.groups[0].rows[0].lower,
-                      c.summary.reach.groups[0].rows[0].upper, "m", c.confidence) +
-        " (" + percentile_interval_text(c) + "); largest " + value(c.summary.max_reach, "m") + ".");
+        proportion_interval_text(c) + " (dashed). Median reach over all rocks " +
+        value(median.value, "m") + ", " + percentile_interval_text(c) + " " +
+        value(median.lower, "m") + " to " + value(median.upper, "m") +
+        " ('-': too few rocks for a bound); largest " + value(c.summary.max_reach, "m") + ".");
     for (const db::GroupBy by : {db::GroupBy::shape, db::GroupBy::zone}) {
         const std::string name(db::to_string(by));
         const db::Grouping grouping{by, {}, db::Per::rock};
@@ -72,8 +80,7 @@ std::optional<Section> exceedance_section(SweepContext& c, double distance) {
             db::exceedance(c.db, db::Quantity::reach, distance, grouping, o.method, o.confidence);
         Table t{"P(reach >= " + x + ") by " + name + ", " + proportion_interval_text(c),
                 {name, "rocks", "reaching " + x, "probability", "interval"},
-                {},
-                -1};
+                {}};
         for (const db::ExceedanceGroup& g : at.groups) {
             t.rows.push_back(
                 {g.id.label, std::to_string(g.trials), std::to_string(g.exceeding),
@@ -97,12 +104,12 @@ std::optional<Section> wall_section(SweepContext& c) {
         percentile_interval_text(c) + "; '-' where the sample is too small for a bound.");
     const db::Quantity quantities[] = {db::Quantity::impact_energy, db::Quantity::impulse,
                                        db::Quantity::peak_force};
-    Table t{"Wall loads over the rocks that hit the wall", {"percentile"}, {}, -1};
+    Table t{"Wall loads over the rocks that hit the wall", {"percentile"}, {}};
     std::vector<db::PercentileTable> tables;
     for (const db::Quantity q : quantities) {
         tables.push_back(db::percentiles(c.db, q, levels, {}, c.options.confidence));
         const std::string unit(db::unit_of(q));
-        t.header.push_back(std::string(db::to_string(q)) + " (" + unit + ")");
+        t.header.push_back(words(db::to_string(q)) + " (" + unit + ")");
         t.header.push_back(confidence_text(c.options.confidence) + " % CI (" + unit + ")");
     }
     for (std::size_t l = 0; l < levels.size(); ++l) {
@@ -147,8 +154,7 @@ std::optional<Section> envelope_section(SweepContext& c) {
     Table t{"Ratio peak load / formula by shape",
             {"shape", "alpha", "beta", "lambda (Pa)", "impacts", "above", "share above (%)",
              confidence_text(all.confidence) + " % Wilson interval (%)", "median", "p95", "max"},
-            {},
-            -1};
+            {}};
     const auto add = [&](const std::string& label, const risk::EnvelopeStats& st,
                          const risk::ImpactCoefficients* k) {
         t.rows.push_back({label, k ? fmt("%.3g", k->alpha) : "", k ? fmt("%.3g", k->beta) : "",
@@ -167,8 +173,7 @@ std::optional<Section> envelope_section(SweepContext& c) {
     add("all", all, nullptr);
     body += table(t);
     body += figure(envelope_figure(data, compared, o.formula,
-                                   "Wall impacts and the " + o.formula.name +
-                                       " envelope: " + c.summary.run.scenario_name),
+                                   "Wall impacts and the " + o.formula.name + " envelope"),
                    c.next_figure(),
                    "Peak load against impact velocity in the manner of seed 000's Figure 7: "
                    "each impact scaled to its shape's median mass by the formula's m^(2/3), "
@@ -183,26 +188,29 @@ std::optional<Section> worst_section(SweepContext& c) {
         "The rocks with the largest reach and, when rocks hit the wall, the largest peak force "
         "(`rockfall query " +
         c.options.database +
-        " worst`); each replays alone, bit for bit, with the command beside it. Wall columns "
-        "are each rock's largest over its hits; '-' without a hit.");
+        " worst`), each with the command below its table that replays it alone, bit for bit. "
+        "Wall columns are each rock's largest over its hits; '-' without a hit.");
     const std::string db_word = shell_word(c.options.database);
     for (const db::Quantity by : {db::Quantity::reach, db::Quantity::peak_force}) {
         if (by == db::Quantity::peak_force && c.summary.wall.count == 0) continue;
-        Table t{"Worst by " + std::string(db::to_string(by)) + " (" + std::string(db::unit_of(by)) +
-                    ")",
+        const std::string name = words(db::to_string(by));
+        Table t{"Worst by " + name + " (" + std::string(db::unit_of(by)) + ")",
                 {"rank", "sample", "rock", "kind", "size (m)", "mass (kg)", "zone", "reach (m)",
-                 "max speed (m/s)", "peak force (N)", "impact energy (J)", "replay"},
-                {},
-                11};
+                 "max speed (m/s)", "wall hits", "peak force (N)", "impact energy (J)"},
+                {}};
+        std::string commands;
         std::int64_t rank = 0;
         for (const db::WorstSample& w : db::worst_samples(c.db, by, c.options.worst)) {
-            t.rows.push_back(
-                {std::to_string(++rank), std::to_string(w.sample), std::to_string(w.rock), w.kind,
-                 fmt("%.4g", w.size), fmt("%.4g", w.mass), w.zone, fmt("%.4g", w.reach),
-                 fmt("%.4g", w.max_speed), value(w.peak_force, ""), value(w.impact_energy, ""),
-                 "rockfall simulate --from " + db_word + " --sample " + std::to_string(w.sample)});
+            t.rows.push_back({std::to_string(++rank), std::to_string(w.sample),
+                              std::to_string(w.rock), w.kind, fmt("%.4g", w.size),
+                              fmt("%.4g", w.mass), w.zone, fmt("%.4g", w.reach),
+                              fmt("%.4g", w.max_speed), std::to_string(w.wall_hits),
+                              value(w.peak_force, ""), value(w.impact_energy, "")});
+            commands += "# " + std::to_string(rank) + ": sample " + std::to_string(w.sample) +
+                        ", engine seed " + std::to_string(w.seed) + "\nrockfall simulate --from " +
+                        db_word + " --sample " + std::to_string(w.sample) + "\n";
         }
-        body += table(t);
+        body += table(t) + preformatted(commands, "commands");
     }
     return Section{"worst", "Worst samples", body};
 }

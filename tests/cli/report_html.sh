@@ -16,7 +16,7 @@ well_formed() { xmllint --noout "$1" || fail "$1 is not well-formed"; }
 "$make_db" sweep.db 500 >/dev/null
 "$rockfall" report sweep.db --html sweep.html
 well_formed sweep.html
-for id in provenance convergence reach stations wall envelope worst; do
+for id in provenance convergence reach stations wall envelope worst scenario; do
     grep -q "<section id=\"$id\">" sweep.html || fail "no section $id"
 done
 [ "$(grep -c '<figure>' sweep.html)" -eq 4 ] || fail "expected 4 figures"
@@ -38,7 +38,7 @@ grep -qF "<td class=\"n\">$p95_text</td>" sweep.html || fail "peak force p95 $p9
 echo "peak force p95 $p95_text N is in the report"
 # The worst rock by reach and the command that replays it.
 worst=$("$rockfall" query sweep.db worst --n 1 --csv | tail -n 1 | cut -d, -f2)
-grep -qF "rockfall simulate --from sweep.db --sample $worst</td>" sweep.html ||
+grep -qxF "rockfall simulate --from sweep.db --sample $worst" sweep.html ||
     fail "no replay command for sample $worst"
 echo "worst sample $worst replays with its command"
 # P(reach >= x) by zone at the convergence distance, as exceed prints it.

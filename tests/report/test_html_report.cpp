@@ -82,8 +82,8 @@ TEST_CASE("a sweep's report has every section, its figures and well-formed marku
     const db::ResultsDb db = sweep_db(dir / "sweep.db", 400);
     const std::string html = report_of(db);
     CHECK(test::xml_problem(html).empty());
-    for (const char* id :
-         {"provenance", "convergence", "reach", "stations", "wall", "envelope", "worst"}) {
+    for (const char* id : {"provenance", "convergence", "reach", "stations", "wall", "envelope",
+                           "worst", "scenario"}) {
         INFO(id);
         CHECK(has_section(html, id));
     }
@@ -91,6 +91,12 @@ TEST_CASE("a sweep's report has every section, its figures and well-formed marku
     CHECK(count(html, "<figure>") == 4);
     CHECK(count(html, "<svg ") == 4);
     CHECK(count(html, "</svg>") == 4);
+    // Ids are global in a page: each figure's clip path is its own.
+    for (int k = 1; k <= 4; ++k) {
+        CHECK(count(html, "id=\"fig" + std::to_string(k) + "-plot-area\"") == 1);
+        CHECK(count(html, "url(#fig" + std::to_string(k) + "-plot-area)") == 1);
+    }
+    CHECK(count(html, "id=\"plot-area\"") == 0);
     // Self-contained: no script, nothing fetched.
     CHECK(html.find("<script") == std::string::npos);
     CHECK(html.find("src=") == std::string::npos);
@@ -117,8 +123,8 @@ TEST_CASE("the report's numbers are the query's", "[report][html]") {
                     "</td>") != std::string::npos);
     // The worst rock by reach and its replay command.
     const db::WorstSample worst = db::worst_samples(db, db::Quantity::reach, 1).at(0);
-    CHECK(html.find("rockfall simulate --from sweep.db --sample " + std::to_string(worst.sample)) !=
-          std::string::npos);
+    CHECK(html.find("\nrockfall simulate --from sweep.db --sample " + std::to_string(worst.sample) +
+                    "\n") != std::string::npos);
     // The convergence ends at the summary's share of samples on the wall, with its interval.
     CHECK(html.find("<td>" + std::to_string(summary.samples) + "</td><td class=\"n\">" +
                     report::share_text(summary.wall_samples, "95")) != std::string::npos);
