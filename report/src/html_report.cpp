@@ -303,6 +303,10 @@ void write_html_report(std::ostream& out, const db::ResultsDb& db,
                        {{"rock sweep sections", "the database holds one soil flow"}});
         return;
     }
+    if (db.kind() != db::RunKind::rock_sweep) {
+        // A calibration run: refused as a rock sweep's readers refuse it, naming what it holds.
+        db::ResultsDb::open(db.path(), false);
+    }
     SweepContext c{db,
                    options,
                    db::summarize(db, options.confidence),
