@@ -17,6 +17,8 @@ packages=(
     libopenmpi-dev openmpi-bin
     # tests and format check
     catch2 clang-format
+    # the HTML report test parses the report as XML (tests/cli/report_html.sh)
+    libxml2-utils
     # fuzz targets (scripts/fuzz.sh, run by CI): clang and its libFuzzer runtime
     clang libclang-rt-14-dev
 )

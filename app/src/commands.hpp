@@ -43,6 +43,9 @@ void register_terrain(CLI::App& app);
 /// samples of a results database, as text, CSV or JSON.
 void register_query(CLI::App& app);
 
+/// `rockfall report DB --html FILE`: one self-contained HTML report of a results database.
+void register_report(CLI::App& app);
+
 /// `rockfall sweep SCENARIO --db FILE`: a Monte Carlo sweep into a results database.
 void register_sweep(CLI::App& app);
 

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
     rockfall::app::register_shape(app);
     rockfall::app::register_terrain(app);
     rockfall::app::register_query(app);
+    rockfall::app::register_report(app);
     rockfall::app::register_calibrate(app);
     rockfall::app::register_validate(app);
     rockfall::app::check_seed_options(app);

@@ -76,10 +76,7 @@ PercentileGroup percentile_group(const Group& group, const std::vector<double>& 
     return out;
 }
 
-}  // namespace
-
-PercentileTable percentiles(const ResultsDb& db, Quantity quantity, const std::vector<double>& ps,
-                            const Grouping& grouping, double confidence) {
+void require_levels(const std::vector<double>& ps, double confidence) {
     require_confidence(confidence);
     for (const double p : ps) {
         if (!(p > 0.0 && p < 1.0)) {
@@ -87,6 +84,19 @@ PercentileTable percentiles(const ResultsDb& db, Quantity quantity, const std::v
                                         ": must be in (0, 100)");
         }
     }
+}
+
+}  // namespace
+
+PercentileGroup percentiles_of(const Group& group, const std::vector<double>& ps,
+                               double confidence) {
+    require_levels(ps, confidence);
+    return percentile_group(group, ps, confidence);
+}
+
+PercentileTable percentiles(const ResultsDb& db, Quantity quantity, const std::vector<double>& ps,
+                            const Grouping& grouping, double confidence) {
+    require_levels(ps, confidence);
     PercentileTable table{quantity, confidence, {}};
     for (const Group& group : read_groups(db, quantity, grouping)) {
         table.groups.push_back(percentile_group(group, ps, confidence));

@@ -4,6 +4,8 @@
 
 #include "report/text_format.hpp"
 
+#include "risk/statistics.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -43,6 +45,7 @@ constexpr LineStyle envelope_style{"identified formula \u03b1 \u03b2 P(\u03bb)",
 constexpr LineStyle preset_style{"seed 000 preset for the shape", "2 3", 1.2, 1.0};
 constexpr LineStyle mean_style{"mean regression", "", 1.5, 1.0};
 constexpr LineStyle upper_style{"mean + 1\u03c3 regression", "7 4", 1.5, 1.0};
+constexpr LineStyle formula_style{"formula at the median mass", "", 2.0, 1.0};
 
 Series styled(const LineStyle& style, const char* color) {
     Series s;
@@ -140,6 +143,59 @@ Plot fit_figure(const std::vector<ShapeFit>& fits, const std::string& title) {
     }
     // The envelopes run to the axis end and may dwarf the data: the axis shows the data and
     // the regression band with room above, and clips the envelopes.
+    plot.y_max = nice_ticks(0.0, 1.3 * y_top).upper;
+    return plot;
+}
+
+Plot envelope_figure(const ImpactData& data, const std::vector<risk::ComparedImpact>& compared,
+                     const risk::EnvelopeFormula& formula, const std::string& title) {
+    Plot plot;
+    plot.title = title;
+    plot.width = 1080.0;
+    plot.x_label = "impact velocity (m/s)";
+    plot.y_label = "peak load at the shape's median mass (kN)";
+    plot.x_min = 0.0;
+    plot.y_min = 0.0;
+    double v_max = 0.0;
+    for (const risk::ImpactRow& row : data.rows) v_max = std::max(v_max, row.velocity);
+    plot.x_max = nice_ticks(0.0, v_max).upper;
+    const double v_from = 0.02 * *plot.x_max;
+    double y_top = 0.0;
+    for (const risk::ImpactShape shape : risk::all_impact_shapes) {
+        std::vector<double> masses;
+        std::size_t above = 0;
+        for (const risk::ComparedImpact& c : compared) {
+            if (data.rows[c.row].shape != shape) continue;
+            masses.push_back(data.rows[c.row].mass);
+            above += c.ratio > 1.0 ? 1 : 0;
+        }
+        if (masses.empty()) continue;
+        const double reference = risk::median(masses);
+        const ShapeStyle style = style_of(shape);
+        const risk::ImpactCoefficients c = risk::envelope_coefficients(formula, shape);
+        plot.series.push_back(curve(formula_style, style.color, v_from, *plot.x_max, [&](double v) {
+            return risk::jra_impact_force(reference, v, c);
+        }));
+        Series points;
+        points.label = std::string(risk::to_string(shape)) +
+                       " (n = " + std::to_string(masses.size()) + fmt(", at %.3g kg", reference) +
+                       "): " + std::to_string(above) + " above";
+        points.color = style.color;
+        points.line = false;
+        points.marker = style.marker;
+        points.marker_size = 3.0;
+        points.opacity = 0.7;
+        for (const risk::ComparedImpact& ci : compared) {
+            const risk::ImpactRow& row = data.rows[ci.row];
+            if (row.shape != shape) continue;
+            points.x.push_back(row.velocity);
+            points.y.push_back(scaled_load(row, reference) / n_per_kn);
+        }
+        y_top = std::max(y_top, *std::max_element(points.y.begin(), points.y.end()));
+        plot.series.push_back(std::move(points));
+    }
+    plot.series.push_back(key(formula_style));
+    // As in fit_figure: the data with room above; the curves are clipped.
     plot.y_max = nice_ticks(0.0, 1.3 * y_top).upper;
     return plot;
 }

@@ -3,9 +3,15 @@
 #include "report/impact_data.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace rockfall::report {
+namespace {
+
+bool positive(double x) { return std::isfinite(x) && x > 0.0; }
+
+}  // namespace
 
 HitVelocity parse_hit_velocity(const std::string& name) {
     if (name == "normal") return HitVelocity::normal;
@@ -15,6 +21,26 @@ HitVelocity parse_hit_velocity(const std::string& name) {
 
 const char* to_string(HitVelocity velocity) {
     return velocity == HitVelocity::normal ? "normal" : "total";
+}
+
+ImpactData database_rows(std::vector<db::WallImpact> hits, HitVelocity velocity) {
+    ImpactData data;
+    data.from_database = true;
+    for (db::WallImpact& hit : hits) {
+        risk::ImpactRow row;
+        row.velocity = velocity == HitVelocity::normal ? hit.normal_speed : hit.impact_speed;
+        row.peak_force = hit.peak_force;
+        row.mass = hit.mass;
+        const std::optional<risk::ImpactShape> shape = risk::find_impact_shape(hit.kind);
+        if (!shape || !positive(row.velocity) || !positive(row.peak_force) || !positive(row.mass)) {
+            ++data.skipped;
+            continue;
+        }
+        row.shape = *shape;
+        data.rows.push_back(row);
+        data.hits.push_back(std::move(hit));
+    }
+    return data;
 }
 
 void drop_slow(ImpactData& data, double min_velocity) {

@@ -16,14 +16,6 @@ struct Item {
     double upper = std::nan("");
 };
 
-std::string share_text(const db::Share& s, const std::string& confidence) {
-    if (s.trials == 0) return "none";
-    return std::to_string(s.count) + " of " + std::to_string(s.trials) + ", " +
-           percent_text(static_cast<double>(s.count) / static_cast<double>(s.trials)) + " % (" +
-           confidence + " % CI " + percent_text(s.interval.lower) + " to " +
-           percent_text(s.interval.upper) + " %)";
-}
-
 double share_value(const db::Share& s) {
     return s.trials == 0 ? std::nan("")
                          : static_cast<double>(s.count) / static_cast<double>(s.trials);
@@ -210,6 +202,14 @@ nlohmann::ordered_json summary_json(const std::string& database, const db::Summa
 }
 
 }  // namespace
+
+std::string share_text(const db::Share& s, const std::string& confidence) {
+    if (s.trials == 0) return "none";
+    return std::to_string(s.count) + " of " + std::to_string(s.trials) + ", " +
+           percent_text(static_cast<double>(s.count) / static_cast<double>(s.trials)) + " % (" +
+           confidence + " % CI " + percent_text(s.interval.lower) + " to " +
+           percent_text(s.interval.upper) + " %)";
+}
 
 void write_summary(std::ostream& out, QueryFormat format, const std::string& database,
                    const db::Summary& summary) {

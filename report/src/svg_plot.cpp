@@ -272,12 +272,12 @@ std::string render_svg(const Plot& plot) {
     const Frame frame{plot_area(plot), x_ticks, y_ticks};
     const PlotArea& a = frame.area;
     std::ostringstream out;
-    out << svg_detail::svg_open(plot.width, plot.height)
-        << "<defs><clipPath id=\"plot-area\"><rect x=\"" << num(a.left) << "\" y=\"" << num(a.top)
-        << "\" width=\"" << num(a.right - a.left) << "\" height=\"" << num(a.bottom - a.top)
-        << "\"/></clipPath></defs>\n";
+    out << svg_detail::svg_open(plot.width, plot.height) << "<defs><clipPath id=\""
+        << svg_detail::escaped(plot.id_prefix) << "plot-area\"><rect x=\"" << num(a.left)
+        << "\" y=\"" << num(a.top) << "\" width=\"" << num(a.right - a.left) << "\" height=\""
+        << num(a.bottom - a.top) << "\"/></clipPath></defs>\n";
     write_axes(out, frame, plot);
-    out << "<g clip-path=\"url(#plot-area)\">\n";
+    out << "<g clip-path=\"url(#" << svg_detail::escaped(plot.id_prefix) << "plot-area)\">\n";
     for (const Series& s : plot.series) {
         std::vector<std::pair<double, double>> points;
         for (std::size_t i = 0; i < s.x.size(); ++i) {

@@ -147,6 +147,12 @@ struct PercentileTable {
 PercentileTable percentiles(const ResultsDb& db, Quantity quantity, const std::vector<double>& ps,
                             const Grouping& grouping, double confidence = 0.95);
 
+/// Percentiles `ps` of one group's values (ascending) with their intervals, as `percentiles`
+/// gives them for each group: for values read elsewhere (the stations). Throws
+/// std::invalid_argument for a bad p or confidence.
+PercentileGroup percentiles_of(const Group& group, const std::vector<double>& ps,
+                               double confidence = 0.95);
+
 /// Interval for a proportion.
 enum class IntervalMethod {
     wilson,           ///< Wilson score interval

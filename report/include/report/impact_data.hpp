@@ -50,6 +50,11 @@ struct ImpactSelection {
     double min_velocity = 0.0;
 };
 
+/// The rows of a results database's wall hits (db::read_wall_impacts), the formula given the
+/// `velocity` of each: hits of a kind with no shape class of the formula, or without a
+/// positive velocity, force or mass, are counted in `skipped`.
+ImpactData database_rows(std::vector<db::WallImpact> hits, HitVelocity velocity);
+
 /// Leaves out the rows (and their hits) slower than `min_velocity` (m/s, finite, >= 0),
 /// counting them in `slow`: a rock pressed against the wall at a few cm/s loads it with its
 /// weight and push, not by an impact the formula describes. Throws std::invalid_argument for

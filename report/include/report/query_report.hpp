@@ -40,6 +40,10 @@ void write_worst(std::ostream& out, QueryFormat format, const std::string& datab
 void write_summary(std::ostream& out, QueryFormat format, const std::string& database,
                    const db::Summary& summary);
 
+/// A share as the summary's text prints it, `confidence` in percent ("95"):
+/// "12 of 40, 30 % (95 % CI 17.9 to 45.6 %)"; "none" without trials.
+std::string share_text(const db::Share& share, const std::string& confidence);
+
 /// The quantity's output column name with its unit ("reach_m", "impact_energy_J").
 std::string quantity_column(db::Quantity quantity);
 

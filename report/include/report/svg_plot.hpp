@@ -72,6 +72,9 @@ struct Plot {
     /// Size of the drawing, px (>= 200 each).
     double width = 960.0;
     double height = 600.0;
+    /// Prefix of the ids inside the drawing (its clip path): ids are global in an HTML page, so
+    /// each of several drawings inlined in one page needs its own ("fig2-"). Empty by default.
+    std::string id_prefix;
 };
 
 /// The rectangle of the plot area inside the drawing, px from the top-left corner.
