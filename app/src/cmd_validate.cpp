@@ -56,8 +56,7 @@ void run_validate(const ValidateArgs& args) {
     options.catalogue = fs::path(samples) / "rocks" / "catalogue.toml";
     for (const fs::path& needed : {options.flume_dir / "flume.toml", options.catalogue}) {
         if (!fs::is_regular_file(needed))
-            throw std::invalid_argument("--samples " + samples + ": no " +
-                                        needed.generic_string() +
+            throw std::invalid_argument("--samples " + samples + ": no " + needed.generic_string() +
                                         " (give the folder of rockfall's samples)");
     }
     options.seeds = args.seeds;
