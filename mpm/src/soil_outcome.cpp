@@ -182,6 +182,18 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
 
 }  // namespace
 
+const char* status_name(SoilStatus status) {
+    switch (status) {
+        case SoilStatus::completed:
+            return "completed";
+        case SoilStatus::left_domain:
+            return "left_domain";
+        case SoilStatus::non_finite:
+            return "non_finite";
+    }
+    return "unknown";
+}
+
 std::vector<double> moving_average(const std::vector<double>& values, int window_samples) {
     const int n = static_cast<int>(values.size());
     const int half = std::max(0, window_samples / 2);

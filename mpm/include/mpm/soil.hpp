@@ -120,6 +120,9 @@ enum class SoilStatus {
     non_finite,
 };
 
+/// The status as stored and printed: "completed", "left_domain" or "non_finite".
+const char* status_name(SoilStatus status);
+
 /// The deposit at the end of the run.
 struct SoilDeposit {
     /// Largest x reached by the soil (particle centres plus half a particle spacing), m.
