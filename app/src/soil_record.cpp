@@ -41,6 +41,8 @@ db::SoilRunRecord make_soil_record(const scenario::SoilFile& file, const mpm::So
         {"cell_size_m", s.numerics.cell_size},
         {"particles_per_cell", s.numerics.particles_per_cell},
         {"cfl", s.numerics.cfl},
+        {"align_grid", s.numerics.align_grid},
+        {"boundary_reach", s.numerics.boundary_reach},
         {"threads",
          s.numerics.threads}}.dump();
     r.run.started_at = times.started_at;

@@ -143,6 +143,8 @@ void validate(const SoilScenario& s) {
     problems.check(n.particles_per_cell >= 1 && n.particles_per_cell <= 8,
                    "numerics.particles_per_cell", n.particles_per_cell, "", "in [1, 8]");
     problems.check(n.cfl > 0.0 && n.cfl <= 1.0, "numerics.cfl", n.cfl, "", "in (0, 1]");
+    problems.check(n.boundary_reach >= 0.0 && n.boundary_reach <= 0.5, "numerics.boundary_reach",
+                   n.boundary_reach, "", "in [0, 0.5]");
     problems.check(n.threads >= 0, "numerics.threads", n.threads, "", ">= 0");
     const SoilOutput& o = s.output;
     problems.check(positive(o.duration), "output.duration", o.duration, "s", "> 0");
@@ -265,6 +267,7 @@ SoilModel<Dim> build_soil_model(const SoilScenario& scenario) {
             anchor_z - std::ceil((anchor_z - settings.domain_min.z()) / h) * h;
     }
     settings.domain_max = hi + Vec3::Constant(3.0 * h);
+    settings.boundary_reach = scenario.numerics.boundary_reach;
     settings.cfl = scenario.numerics.cfl;
     settings.threads = scenario.numerics.threads;
     settings.max_time_step = scenario.output.sample_interval;

@@ -60,11 +60,13 @@ inline const Fields<mpm::SoilBoundaries, 3> soil_boundary_fields{{
     {"wall_fixed", &mpm::SoilBoundaries::wall_fixed, "", {}},
 }};
 
-inline const Fields<mpm::SoilNumerics, 5> soil_numerics_fields{{
+inline const Fields<mpm::SoilNumerics, 7> soil_numerics_fields{{
     {"dimension", &mpm::SoilNumerics::dimension, "", detail::closed(2, 3)},
     {"cell_size", &mpm::SoilNumerics::cell_size, "m", detail::positive()},
     {"particles_per_cell", &mpm::SoilNumerics::particles_per_cell, "", detail::closed(1, 8)},
     {"cfl", &mpm::SoilNumerics::cfl, "", Range{0.0, 1.0, true, false}},
+    {"align_grid", &mpm::SoilNumerics::align_grid, "", {}},
+    {"boundary_reach", &mpm::SoilNumerics::boundary_reach, "", detail::closed(0.0, 0.5)},
     {"threads", &mpm::SoilNumerics::threads, "", detail::non_negative()},
 }};
 

@@ -147,3 +147,31 @@ TEST_CASE("soil file: with extends, the text is the merged scenario and stands a
     CHECK(again.scenario.slope.wall.distance_from_toe ==
           file.scenario.slope.wall.distance_from_toe);
 }
+
+TEST_CASE("soil file: grid placement keys", "[scenario][soil]") {
+    const rockfall::scenario::SoilFile file = rockfall::scenario::parse_soil_scenario(
+        "[numerics]\nalign_grid = false\nboundary_reach = 0.5\n", "grid.toml");
+    CHECK_FALSE(file.scenario.numerics.align_grid);
+    CHECK(file.scenario.numerics.boundary_reach == 0.5);
+    const rockfall::scenario::SoilFile defaults =
+        rockfall::scenario::parse_soil_scenario("", "defaults.toml");
+    CHECK(defaults.scenario.numerics.align_grid);
+    CHECK(defaults.scenario.numerics.boundary_reach == 0.0);
+    try {
+        rockfall::scenario::parse_soil_scenario(
+            "[numerics]\ncell_size = 0.1\nalign_grid = \"no\"\nboundary_reach = 0.7\n",
+            "bad_grid.toml");
+        FAIL("parsing did not throw");
+    } catch (const ScenarioError& error) {
+        CHECK(error.problems().size() == 2);
+        const ScenarioProblem align = problem_for(error, "numerics.align_grid");
+        CHECK(align.line == 3);
+        CHECK_THAT(align.message, Contains("\"no\""));
+        CHECK_THAT(align.message, Contains("must be true or false"));
+        const ScenarioProblem reach = problem_for(error, "numerics.boundary_reach");
+        CHECK(reach.line == 4);
+        CHECK_THAT(reach.message, Contains("0.7"));
+        CHECK_THAT(reach.message, Contains("must be in [0, 0.5]"));
+        CHECK_THAT(std::string(error.what()), Contains("bad_grid.toml:4"));
+    }
+}

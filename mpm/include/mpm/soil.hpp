@@ -68,9 +68,14 @@ struct SoilNumerics {
     /// (x = wall_x) and on the run-out surface (z of the toe), whatever the cell size, so those
     /// two boundaries act exactly at their surface; without a wall, on the toe's x. false: the
     /// grid's first node is 3 cells below and behind the bed and slope (the placement before
-    /// this field), and a boundary between node planes acts at the node layer nearest its
-    /// surface, within h/2 of it (SolverSettings::boundary_reach).
+    /// this field), and a boundary between node planes acts where boundary_reach puts it.
     bool align_grid = true;
+    /// How far outside a solid a grid node may lie and still be constrained by it, as a
+    /// fraction of cell_size, [0, 0.5] (SolverSettings::boundary_reach). 0 (default): nodes on or
+    /// inside the solid only, so a surface between node planes (the inclined slope segments,
+    /// and with align_grid false the wall) acts up to one cell behind its true place; 0.5: the
+    /// node layer nearest the surface, within h/2 of it.
+    double boundary_reach = 0.0;
     /// Worker threads (>= 0; 0 = all available).
     int threads = 0;
 };
