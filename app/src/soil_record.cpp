@@ -43,6 +43,11 @@ db::SoilRunRecord make_soil_record(const scenario::SoilFile& file, const mpm::So
         {"cfl", s.numerics.cfl},
         {"align_grid", s.numerics.align_grid},
         {"boundary_reach", s.numerics.boundary_reach},
+        {"wall_support",
+         s.boundaries.wall_support == mpm::WallSupport::spring ? "spring" : "rigid"},
+        {"wall_facing_mass_kg_m2", s.boundaries.wall_facing_mass},
+        {"wall_stiffness_Pa_m", s.boundaries.wall_stiffness},
+        {"wall_damping_ratio", s.boundaries.wall_damping_ratio},
         {"threads",
          s.numerics.threads}}.dump();
     r.run.started_at = times.started_at;

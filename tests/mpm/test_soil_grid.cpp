@@ -83,3 +83,25 @@ TEST_CASE("Soil grid: boundary_reach is validated and reaches the solver", "[mpm
     CHECK_THROWS_WITH(validate(s), Catch::Matchers::Contains(
                                        "numerics.boundary_reach = 0.6: must be in [0, 0.5]"));
 }
+
+TEST_CASE("Soil spring-backed wall: stiff as the rigid wall; at rest displaced by load / k",
+          "[mpm][soil]") {
+    const SoilOutcome rigid = run_soil(quick_2d(0.2, true));
+    SoilScenario s = quick_2d(0.2, true);
+    s.boundaries.wall_support = WallSupport::spring;
+    s.boundaries.wall_stiffness = 1e9;
+    const SoilOutcome stiff = run_soil(s);
+    CHECK_THAT(stiff.peak_wall_force, WithinRel(rigid.peak_wall_force, 0.005));
+    CHECK_THAT(stiff.wall_impulse, WithinRel(rigid.wall_impulse, 0.005));
+    CHECK(rigid.max_wall_displacement == 0.0);
+
+    s.boundaries.wall_stiffness = 1e6;
+    s.boundaries.wall_damping_ratio = 1.0;
+    const SoilOutcome soft = run_soil(s);
+    REQUIRE(soft.status == SoilStatus::completed);
+    // The deposit rests against the wall: the spring holds the last load.
+    const double k = s.boundaries.wall_stiffness * s.slope.wall.height;  // N/m per m
+    CHECK_THAT(soft.final_wall_displacement, WithinRel(soft.wall_force.back() / k, 0.02));
+    CHECK(soft.max_wall_displacement >= soft.final_wall_displacement);
+    CHECK(soft.max_wall_displacement < 0.05 * s.numerics.cell_size);
+}
