@@ -117,6 +117,13 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
     while (solver.time() < duration - 1e-12) {
         const double t0 = solver.time();
         const double dt = std::min(solver.stable_time_step(), duration - t0);
+        // A non-finite particle speed or density makes the stable step NaN: stop with a status
+        // rather than step.
+        if (!(dt > 0.0 && std::isfinite(dt))) {
+            outcome.status = SoilStatus::non_finite;
+            outcome.message = "non-finite stable time step at t = " + std::to_string(t0) + " s";
+            break;
+        }
         const StepReport& report = solver.step(dt);
         const double t1 = solver.time();
         // A spring-backed wall's load is the force in its spring and dashpot (the load cell);
@@ -185,8 +192,14 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
         outcome.peak_wall_force_filtered =
             std::max(outcome.peak_wall_force_filtered, outcome.wall_force_filtered[k]);
     }
-    outcome.deposit = deposit_of(solver.particles(), model.slope, scenario.numerics.cell_size,
-                                 0.5 * model.particle_spacing);
+    if (outcome.status == SoilStatus::non_finite) {
+        // Positions that blew up have no deposit.
+        outcome.deposit.runout_x = std::numeric_limits<double>::quiet_NaN();
+        outcome.deposit.runout_past_toe = outcome.deposit.runout_x;
+    } else {
+        outcome.deposit = deposit_of(solver.particles(), model.slope, scenario.numerics.cell_size,
+                                     0.5 * model.particle_spacing);
+    }
     return outcome;
 }
 
