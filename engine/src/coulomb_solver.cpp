@@ -1,10 +1,20 @@
 #include "coulomb_solver.hpp"
 
+#include "friction_patch.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace rockfall::engine {
 namespace {
+
+// Contact points whose normals agree within this angle (its cosine: 5 degrees) are one patch.
+const double kPatchCosine = std::cos(5.0 * std::numbers::pi / 180.0);
+
+const btVector3& normal_of(const btSolverConstraint& row) {
+    return static_cast<const btManifoldPoint*>(row.m_originalContactPoint)->m_normalWorldOnB;
+}
 
 // Normal relative velocity of a row's two bodies (negative when approaching), m/s, without and
 // with the external impulses (gravity, applied forces) of the coming step.
@@ -32,6 +42,8 @@ double normal_velocity(const btSolverConstraint& row, const btSolverBody& a, con
 void CoulombSolver::convertContacts(btPersistentManifold** manifolds, int manifold_count,
                                     const btContactSolverInfo& info) {
     btSequentialImpulseConstraintSolver::convertContacts(manifolds, manifold_count, info);
+    disable_point_friction();
+    build_patches(manifolds, manifold_count, info);
     aim_restitution_at_touch(info);
 }
 
@@ -67,13 +79,13 @@ btScalar CoulombSolver::solveSingleIteration(int iteration, btCollisionObject** 
                                              int manifold_count, btTypedConstraint** constraints,
                                              int constraint_count, const btContactSolverInfo& info,
                                              btIDebugDraw* debug_drawer) {
+    const btScalar friction = iteration < info.m_numIterations ? solve_patches() : 0.0;
     const btScalar residual = btSequentialImpulseConstraintSolver::solveSingleIteration(
         iteration, bodies, body_count, manifolds, manifold_count, constraints, constraint_count,
         info, debug_drawer);
-    release_unloaded(m_tmpSolverContactFrictionConstraintPool);
     release_unloaded(m_tmpSolverContactRollingFrictionConstraintPool);
     bound_rolling_resistance();
-    return residual;
+    return std::max(residual, friction);
 }
 
 void CoulombSolver::release_unloaded(btConstraintArray& rows) {
@@ -108,6 +120,204 @@ void CoulombSolver::bound_rolling_resistance() {
         resolveSingleConstraintRowGeneric(m_tmpSolverBodyPool[row.m_solverBodyIdA],
                                           m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
     }
+}
+
+void CoulombSolver::disable_point_friction() {
+    btConstraintArray& rows = m_tmpSolverContactFrictionConstraintPool;
+    for (int i = 0; i < rows.size(); ++i) {
+        btSolverConstraint& row = rows[i];
+        // Takes back Bullet's warm start; with no friction Bullet's iterations keep it at zero.
+        row.m_friction = 0.0;
+        row.m_lowerLimit = 0.0;
+        row.m_upperLimit = 0.0;
+        if (row.m_appliedImpulse != 0.0) {
+            resolveSingleConstraintRowGeneric(m_tmpSolverBodyPool[row.m_solverBodyIdA],
+                                              m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+        }
+    }
+}
+
+void CoulombSolver::build_patches(btPersistentManifold** manifolds, int manifold_count,
+                                  const btContactSolverInfo& info) {
+    patches_.clear();
+    // Bullet adds the normal rows manifold by manifold, each point that is close enough.
+    const int rows = m_tmpSolverContactConstraintPool.size();
+    int row = 0;
+    for (int m = 0; m < manifold_count && row < rows; ++m) {
+        btPersistentManifold& manifold = *manifolds[m];
+        const int first = row;
+        for (int j = 0; j < manifold.getNumContacts() && row < rows; ++j) {
+            if (m_tmpSolverContactConstraintPool[row].m_originalContactPoint ==
+                &manifold.getContactPoint(j)) {
+                ++row;
+            }
+        }
+        // Rows whose normals agree within kPatchAngle are one face's: a rock resting on two
+        // spheres of a lining has two patches.
+        bool grouped[MANIFOLD_CACHE_SIZE] = {};
+        for (int i = first; i < row; ++i) {
+            if (grouped[i - first]) {
+                continue;
+            }
+            const btVector3& normal = normal_of(m_tmpSolverContactConstraintPool[i]);
+            int rows[MANIFOLD_CACHE_SIZE];
+            int count = 0;
+            for (int j = i; j < row && count < MANIFOLD_CACHE_SIZE; ++j) {
+                if (!grouped[j - first] &&
+                    normal_of(m_tmpSolverContactConstraintPool[j]).dot(normal) >= kPatchCosine) {
+                    grouped[j - first] = true;
+                    rows[count++] = j;
+                }
+            }
+            add_patch(manifold, rows, count, info);
+        }
+    }
+}
+
+void CoulombSolver::add_patch(btPersistentManifold& manifold, const int* rows, int row_count,
+                              const btContactSolverInfo& info) {
+    btVector3 points[MANIFOLD_CACHE_SIZE];
+    btVector3 normal(0, 0, 0);
+    const int count = row_count;
+    for (int k = 0; k < count; ++k) {
+        const auto* point = static_cast<const btManifoldPoint*>(
+            m_tmpSolverContactConstraintPool[rows[k]].m_originalContactPoint);
+        points[k] = 0.5 * (point->getPositionWorldOnA() + point->getPositionWorldOnB());
+        normal += point->m_normalWorldOnB;
+    }
+    if (normal.length2() < SIMD_EPSILON) {
+        return;
+    }
+    normal.normalize();
+    const btSolverConstraint& head = m_tmpSolverContactConstraintPool[rows[0]];
+    const int id_a = head.m_solverBodyIdA;
+    const int id_b = head.m_solverBodyIdB;
+    const btRigidBody* moving_a = m_tmpSolverBodyPool[id_a].m_originalBody;
+    const btRigidBody* moving_b = m_tmpSolverBodyPool[id_b].m_originalBody;
+    btVector3 centre;
+    const btVector3* projected = nullptr;
+    if ((moving_a != nullptr) != (moving_b != nullptr)) {
+        centre = (moving_a != nullptr ? moving_a : moving_b)->getCenterOfMassPosition();
+        projected = &centre;
+    }
+    const PatchGeometry geometry = patch_geometry(points, count, normal, projected);
+
+    auto* body0 = const_cast<btCollisionObject*>(manifold.getBody0());
+    auto* body1 = const_cast<btCollisionObject*>(manifold.getBody1());
+    const btVector3 rel_pos1 = geometry.anchor - body0->getWorldTransform().getOrigin();
+    const btVector3 rel_pos2 = geometry.anchor - body1->getWorldTransform().getOrigin();
+    const auto velocity = [](const btRigidBody* body, const btVector3& rel_pos) {
+        return body != nullptr ? body->getVelocityInLocalPoint(rel_pos) : btVector3(0, 0, 0);
+    };
+    const btVector3 slip = velocity(moving_a, rel_pos1) - velocity(moving_b, rel_pos2);
+    const btVector3 tangential = slip - normal * normal.dot(slip);
+
+    Patch patch;
+    std::copy(rows, rows + row_count, patch.rows);
+    patch.row_count = row_count;
+    // The first direction along the slip, as Bullet's rows: the cone bound then rarely binds
+    // the second.
+    if (tangential.length2() > SIMD_EPSILON) {
+        patch.directions[0] = tangential.normalized();
+        patch.directions[1] = patch.directions[0].cross(normal).normalized();
+    } else {
+        btPlaneSpace1(normal, patch.directions[0], patch.directions[1]);
+    }
+    auto& point = *static_cast<btManifoldPoint*>(head.m_originalContactPoint);
+    for (int k = 0; k < 2; ++k) {
+        setupFrictionConstraint(patch.slide[k], patch.directions[k], id_a, id_b, point, rel_pos1,
+                                rel_pos2, body0, body1, info.m_sor, info);
+    }
+    patch.mu = point.m_combinedFriction;
+    patch.twist_radius = geometry.twist_radius;
+    if (patch.twist_radius > 0.0) {
+        setupTorsionalFrictionConstraint(patch.twist, normal, id_a, id_b, point, 0.0, rel_pos1,
+                                         rel_pos2, body0, body1, info.m_sor);
+    }
+    patches_.push_back(patch);
+}
+
+double CoulombSolver::patch_normal(const Patch& patch) const {
+    double normal = 0.0;
+    for (int k = 0; k < patch.row_count; ++k) {
+        normal += std::max<btScalar>(
+            0.0, m_tmpSolverContactConstraintPool[patch.rows[k]].m_appliedImpulse);
+    }
+    return normal;
+}
+
+btScalar CoulombSolver::solve_patches() {
+    btScalar residual = 0.0;
+    // Solving a row with both limits at the target sets its impulse to the target.
+    const auto set = [&](btSolverConstraint& row, btScalar lower, btScalar upper) {
+        row.m_lowerLimit = lower;
+        row.m_upperLimit = upper;
+        const btScalar change =
+            resolveSingleConstraintRowGeneric(m_tmpSolverBodyPool[row.m_solverBodyIdA],
+                                              m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+        residual = std::max(residual, change * change);
+    };
+    for (Patch& patch : patches_) {
+        const double bound = patch.mu * patch_normal(patch);
+        // The impulse that stops the slip, both directions from the same velocities, projected
+        // onto Coulomb's disc: the friction then opposes the slip. Solving the rows one after
+        // the other let the second hold the slip's direction (a block sliding 5 degrees off
+        // the fall line kept that heading instead of turning downhill).
+        double target[2];
+        for (int k = 0; k < 2; ++k) {
+            target[k] = patch.slide[k].m_appliedImpulse + impulse_to_stop(patch.slide[k]);
+        }
+        const double magnitude = std::sqrt(target[0] * target[0] + target[1] * target[1]);
+        const double scale = magnitude > bound ? bound / magnitude : 1.0;
+        for (int k = 0; k < 2; ++k) {
+            set(patch.slide[k], scale * target[k], scale * target[k]);
+        }
+        if (patch.twist_radius > 0.0) {
+            const double twist = bound * patch.twist_radius;
+            set(patch.twist, -twist, twist);
+        }
+    }
+    return residual;
+}
+
+double CoulombSolver::impulse_to_stop(const btSolverConstraint& row) const {
+    // Bullet's resolveSingleConstraintRowGeneric before it clamps and applies.
+    const btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
+    const btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
+    const btScalar velocity = row.m_contactNormal1.dot(a.m_deltaLinearVelocity) +
+                              row.m_relpos1CrossNormal.dot(a.m_deltaAngularVelocity) +
+                              row.m_contactNormal2.dot(b.m_deltaLinearVelocity) +
+                              row.m_relpos2CrossNormal.dot(b.m_deltaAngularVelocity);
+    return row.m_rhs - row.m_appliedImpulse * row.m_cfm - velocity * row.m_jacDiagABInv;
+}
+
+btScalar CoulombSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int body_count,
+                                                      const btContactSolverInfo& info) {
+    report_patches();
+    return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, body_count,
+                                                                              info);
+}
+
+void CoulombSolver::report_patches() {
+    // Bullet's finish copies each point's friction rows into the point (m_appliedImpulseLateral1
+    // and 2, along its m_lateralFrictionDir1 and 2), where the wall's load cell reads them.
+    for (const Patch& patch : patches_) {
+        const btVector3 impulse = patch.directions[0] * patch.slide[0].m_appliedImpulse +
+                                  patch.directions[1] * patch.slide[1].m_appliedImpulse;
+        const double normal = patch_normal(patch);
+        for (int k = 0; k < patch.row_count; ++k) {
+            const btSolverConstraint& row = m_tmpSolverContactConstraintPool[patch.rows[k]];
+            const auto* point = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
+            const double share = normal > 0.0
+                                     ? std::max<btScalar>(0.0, row.m_appliedImpulse) / normal
+                                     : 1.0 / patch.row_count;
+            btSolverConstraint* lateral =
+                &m_tmpSolverContactFrictionConstraintPool[row.m_frictionIndex];
+            lateral[0].m_appliedImpulse = share * impulse.dot(point->m_lateralFrictionDir1);
+            lateral[1].m_appliedImpulse = share * impulse.dot(point->m_lateralFrictionDir2);
+        }
+    }
+    patches_.clear();
 }
 
 }  // namespace rockfall::engine

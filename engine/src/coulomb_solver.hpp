@@ -4,6 +4,8 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <vector>
+
 namespace rockfall::engine {
 
 // Bullet re-bounds a friction row by mu times its point's normal impulse only while that
@@ -20,6 +22,15 @@ namespace rockfall::engine {
 // this solver solves each rolling row again with the law's bound mu_r r times its point's
 // normal impulse.
 //
+// Bullet bounds each point's friction by that point's normal impulse, and the iterative
+// solver spreads a face's normal impulse over its points arbitrarily (one corner one step,
+// another the next): per-point friction then has a moment about the normal that no symmetric
+// slide has, and a block sliding straight down a 30 degree incline turned 29 degrees in 2.4 s
+// (mu = 0.3). This solver replaces the points' friction rows by one Coulomb force and one
+// twisting torque per manifold (friction_patch.hpp), bounded by the manifold's whole normal
+// impulse, with the force in Coulomb's cone (sqrt(f1^2 + f2^2) <= mu N), and reports the
+// patch's impulse back on the points in proportion to their normal impulses.
+//
 // Restitution: Bullet aims a bouncing point's rebound at e times its approach speed at the
 // start of the step, when the point is already below the surface; it crossed the surface up
 // to a step earlier at a lower speed (gravity has since added up to g dt). This solver aims at
@@ -35,10 +46,35 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
                                   const btContactSolverInfo& info,
                                   btIDebugDraw* debug_drawer) override;
 
+    btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int body_count,
+                                           const btContactSolverInfo& info) override;
+
   private:
+    // One face's friction: rows `rows` of the contact pool, points of one manifold.
+    struct Patch {
+        int rows[MANIFOLD_CACHE_SIZE] = {};
+        int row_count = 0;
+        btVector3 directions[2];
+        btSolverConstraint slide[2];
+        btSolverConstraint twist;
+        double mu = 0.0;
+        double twist_radius = 0.0;  // m
+    };
+
     void release_unloaded(btConstraintArray& rows);
+    void disable_point_friction();
+    void build_patches(btPersistentManifold** manifolds, int manifold_count,
+                       const btContactSolverInfo& info);
+    void add_patch(btPersistentManifold& manifold, const int* rows, int row_count,
+                   const btContactSolverInfo& info);
+    double patch_normal(const Patch& patch) const;
+    btScalar solve_patches();
+    double impulse_to_stop(const btSolverConstraint& row) const;
+    void report_patches();
     void bound_rolling_resistance();
     void aim_restitution_at_touch(const btContactSolverInfo& info);
+
+    std::vector<Patch> patches_;
 };
 
 }  // namespace rockfall::engine

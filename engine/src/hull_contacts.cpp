@@ -1,5 +1,7 @@
 #include "hull_contacts.hpp"
 
+#include "face_contacts.hpp"
+
 #include <BulletCollision/CollisionDispatch/btActivatingCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
@@ -42,6 +44,7 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
             // apart (most pairs the broadphase reports) never pay for the perturbed queries.
             perturbing_->processCollision(body0, body1, info, result);
         }
+        add_face_contacts(body0, body1);
         // The inner algorithms do not own the manifold, so they leave its refresh to us.
         result->refreshContactPoints();
     }
@@ -57,6 +60,18 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
     }
 
   private:
+    // A hull on a box's face: every vertex on the face, not only GJK's one (face_contacts).
+    void add_face_contacts(const btCollisionObjectWrapper* body0,
+                           const btCollisionObjectWrapper* body1) {
+        const int type0 = body0->getCollisionShape()->getShapeType();
+        const int type1 = body1->getCollisionShape()->getShapeType();
+        if (type0 == CONVEX_HULL_SHAPE_PROXYTYPE && type1 == BOX_SHAPE_PROXYTYPE) {
+            add_box_face_contacts(body0, body1, *manifold_);
+        } else if (type0 == BOX_SHAPE_PROXYTYPE && type1 == CONVEX_HULL_SHAPE_PROXYTYPE) {
+            add_box_face_contacts(body1, body0, *manifold_);
+        }
+    }
+
     btPersistentManifold* manifold_;
     std::unique_ptr<btConvexConvexAlgorithm> plain_;
     std::unique_ptr<btConvexConvexAlgorithm> perturbing_;

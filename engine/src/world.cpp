@@ -6,6 +6,7 @@
 #include "hull_contacts.hpp"
 #include "rock_world.hpp"
 #include "sheet_contacts.hpp"
+#include "terrain_contacts.hpp"
 #include "terrain_shape.hpp"
 
 #include "shapes/lining.hpp"
@@ -111,6 +112,8 @@ std::size_t expected_rocks(const Scenario& scenario) {
 struct World::Impl {
     btDefaultCollisionConfiguration configuration;
     HullContactCreateFunc hull_contacts;
+    TerrainContactCreateFunc terrain_contacts;
+    TerrainContactCreateFunc swapped_terrain_contacts;
     SheetContactCreateFunc sheet_contacts;
     btCollisionDispatcher dispatcher{&configuration};
     // One rock among a few dozen static boxes: the sweep-and-prune broadphase updates one
@@ -158,6 +161,11 @@ struct World::Impl {
               std::pair{CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE}}) {
             dispatcher.registerCollisionCreateFunc(a, b, &hull_contacts);
         }
+        swapped_terrain_contacts.m_swapped = true;
+        dispatcher.registerCollisionCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE,
+                                               TRIANGLE_MESH_SHAPE_PROXYTYPE, &terrain_contacts);
+        dispatcher.registerCollisionCreateFunc(
+            TRIANGLE_MESH_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, &swapped_terrain_contacts);
         // A structured sheet (a SheetShape) with rock hulls and spheres, either order.
         for (const int rock : {CONVEX_HULL_SHAPE_PROXYTYPE, SPHERE_SHAPE_PROXYTYPE}) {
             dispatcher.registerCollisionCreateFunc(rock, CUSTOM_CONCAVE_SHAPE_TYPE,
@@ -187,7 +195,8 @@ struct World::Impl {
         info.m_defaultMaxPersistentManifoldPoolSize = pool;
         info.m_defaultMaxCollisionAlgorithmPoolSize = pool;
         info.m_customCollisionAlgorithmMaxElementSize =
-            std::max(hull_contact_algorithm_size(), sheet_contact_algorithm_size());
+            std::max({hull_contact_algorithm_size(), sheet_contact_algorithm_size(),
+                      terrain_contact_algorithm_size()});
         return info;
     }
 

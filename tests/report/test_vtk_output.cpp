@@ -194,13 +194,31 @@ TEST_CASE("the engine gives a cluster's rock geometries, which sit in the box at
     const report::RockFrame first = frames.frames().front();
     REQUIRE(first.time == 0.0);
     const report::VtkSurface surface = report::rocks_surface(geometry.rocks, first);
-    // Every hull vertex inside the box and none below the floor: settled in it. 2 mm slack:
-    // the box's floor is the sphere layer's top, and a corner sinks into the hollows between
-    // its spheres (by up to 1.9 mm, docs/clusters.md; 1.4 mm seen with seed 3).
+    // Every hull vertex inside the box, settled in it. 2 mm slack: twice the hulls' 1 mm
+    // collision margin (the drawn hull's sharp corners stand out of the margin-rounded collision
+    // shape by up to (sqrt(3) - 1) margin at a cube's corner, more at sharper ones). The box's
+    // floor is the sphere layer's top, and a corner sinks into the hollows between its spheres
+    // (3.6 mm seen with seed 3; a 1 mm-rounded point passes between three 8 mm spheres at 16 mm
+    // spacing), so the floor's bound is the layer's base; but no corner is inside a sphere.
     const shapes::Slope slope(scenario.slope);
+    const std::vector<shapes::Sphere> spheres =
+        shapes::lining_spheres(slope, *scenario.slope.lining);
+    REQUIRE(!spheres.empty());
+    const double radius = spheres.front().radius;
     shapes::OrientedBox box = shapes::release_box_region(slope, scenario.cluster->box);
     box.half_extents += Vec3::Constant(2e-3);
-    for (const Vec3& p : surface.points) CHECK(shapes::signed_distance(box, p) <= 0.0);
+    // The floor is the box's -z face (its local z is the slope's normal).
+    box.center -= box.rotation.col(2) * radius;
+    box.half_extents.z() += radius;
+    for (const Vec3& p : surface.points) {
+        CHECK(shapes::signed_distance(box, p) <= 0.0);
+        for (const shapes::Sphere& sphere : spheres) {
+            if ((p - sphere.center).norm() < sphere.radius - 2e-3) {
+                FAIL_CHECK("a hull corner " << sphere.radius - (p - sphere.center).norm()
+                                            << " m inside a lining sphere");
+            }
+        }
+    }
     // The back wall lies against the box's upslope face, outside it.
     CHECK(shapes::signed_distance(box, geometry.solids.front().center) > 0.0);
 }
