@@ -128,6 +128,17 @@ Series fitted(const ShapePoints& p, std::string label, const char* color) {
     return s;
 }
 
+// Both figures: speeds and Cr start at 0; room for the legend beside the plot area.
+Plot motion_plot(const std::string& title, std::string x_label, std::string y_label) {
+    Plot plot;
+    plot.title = title;
+    plot.x_label = std::move(x_label);
+    plot.y_label = std::move(y_label);
+    plot.x_min = 0.0;
+    plot.width = 1080.0;
+    return plot;
+}
+
 std::string slope_text(const risk::LineFit& fit) {
     return "least squares, slope " + fmt("%.3g", fit.slope) + " rad/m";
 }
@@ -215,13 +226,10 @@ MotionTrend spin_speed_trend(const StationSet& set) {
 }
 
 Plot velocity_change_figure(const std::vector<MotionTrend>& trends, const std::string& title) {
-    Plot plot;
-    plot.title = title;
-    plot.width = 1080.0;
     const std::string far = fmt("%g m", far_station_m);
-    plot.x_label = "rolling coefficient Cr = \u03c9 r / v at " + far + " past the toe (-)";
-    plot.y_label = "rate of velocity change V' = (b - a) / a, toe to " + far + " (-)";
-    plot.x_min = 0.0;
+    Plot plot =
+        motion_plot(title, "rolling coefficient Cr = \u03c9 r / v at " + far + " past the toe (-)",
+                    "rate of velocity change V' = (b - a) / a, toe to " + far + " (-)");
     double cr_max = 0.0;
     for (std::size_t t = 0; t < trends.size(); ++t) {
         for (std::size_t s = 0; s < trends[t].shapes.size(); ++s) {
@@ -243,12 +251,8 @@ Plot velocity_change_figure(const std::vector<MotionTrend>& trends, const std::s
 }
 
 Plot spin_speed_figure(const std::vector<MotionTrend>& trends, const std::string& title) {
-    Plot plot;
-    plot.title = title;
-    plot.width = 1080.0;
-    plot.x_label = "speed at the toe v (m/s)";
-    plot.y_label = "angular speed at the toe \u03c9 (rad/s)";
-    plot.x_min = 0.0;
+    Plot plot =
+        motion_plot(title, "speed at the toe v (m/s)", "angular speed at the toe \u03c9 (rad/s)");
     plot.y_min = 0.0;
     std::vector<Series> lines;
     for (std::size_t t = 0; t < trends.size(); ++t) {
