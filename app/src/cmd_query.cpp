@@ -335,7 +335,7 @@ void register_query(CLI::App& app) {
     stations
         ->add_option("--compare", args->compare,
                      "A second database (e.g. the same sweep with bars off), shown beside the "
-                     "first, labelled by scenario name")
+                     "first; each is labelled by its file name without extension")
         ->check(CLI::ExistingFile);
     add_common(stations, *args);
     stations->callback([args] { run_stations(*args); });

@@ -1,7 +1,7 @@
 // Seed 000's trends about motion ("ANALYSIS OF ROCK BEHAVIOR", Figures 5 and 6) on real small
 // sweeps of the seed slope, bars on (samples/seed_sweep.toml) and off
 // (samples/seed_sweep_bars_off.toml), through the database as `rockfall query DB stations`
-// reads it. About 2 s per sweep of 150 samples.
+// reads it. About 2.5 s per sweep of 150 samples on one core.
 
 #include "report/station_figures.hpp"
 #include "scenario/scenario_file.hpp"
@@ -63,13 +63,13 @@ TEST_CASE("seed 000 Fig. 5: small Cr goes with a more negative V' (bars on and o
     }
 }
 
-// A documented miss (docs/database.md, "Stations"): the simulated slope of w on v at the toe is
-// about half as large with bars as without (4.0 against 7.9 rad/m over all shapes), where the
-// paper finds it larger with bars. Without bars the spheres roll without slipping and reach the
-// toe at nearly one speed with w = v / r, so the spheres' spread of sizes makes the steep part
-// of the line; the blocks and slabs slide slowly. [!mayfail] keeps the check running and
-// reported without failing the suite until the engine's rolling and bouncing are revisited
-// (issue 16's rolling-resistance fault).
+// A documented miss (docs/validation.md, "Seed 000: motion on the slope"): the simulated slope of w
+// on v at the toe is about half as large with bars as without (4.0 against 7.9 rad/m over all
+// shapes), where the paper finds it larger with bars. Without bars the spheres roll without
+// slipping and reach the toe at nearly one speed with w = v / r, so the spheres' spread of sizes
+// makes the steep part of the line; the blocks and slabs slide slowly. [!mayfail] keeps the check
+// running and reported without failing the suite until the engine's rolling and bouncing are
+// revisited (issue 16's rolling-resistance fault).
 TEST_CASE("seed 000 Fig. 6: the slope of angular speed on speed is larger with bars",
           "[report][stations][validation][!mayfail]") {
     const MotionTrend on = spin_speed_trend(swept("seed_sweep.toml"));
