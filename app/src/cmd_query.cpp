@@ -7,10 +7,12 @@
 #include "report/fit_figure.hpp"
 #include "report/query_report.hpp"
 #include "report/soil_report.hpp"
+#include "report/station_figures.hpp"
 
 #include "db/queries.hpp"
 #include "db/results_db.hpp"
 #include "db/soil_run.hpp"
+#include "db/station_values.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -45,6 +47,9 @@ struct QueryArgs {
     // worst.
     std::int64_t count = 10;
     std::string worst_by = "reach";
+    // stations.
+    std::string figure = "vchange-cr";
+    std::string compare;
 };
 
 report::QueryFormat format_of(const QueryArgs& args) {
@@ -154,6 +159,40 @@ void run_worst(const QueryArgs& args) {
     const db::Per per = db::parse_per(args.per);
     report::write_worst(std::cout, format_of(args), args.database, by,
                         db::worst_samples(database, by, args.count, per), per);
+}
+
+report::StationSet station_set(const std::string& path) {
+    const db::ResultsDb database = db::ResultsDb::open(path, false);
+    return {std::filesystem::path(path).stem().string(), path, database.run().scenario_name,
+            db::read_rock_stations(database)};
+}
+
+void run_stations(const QueryArgs& args) {
+    std::vector<report::StationSet> sets = {station_set(args.database)};
+    if (!args.compare.empty()) sets.push_back(station_set(args.compare));
+    // Files of one name in two folders are told apart by their paths.
+    if (sets.size() > 1 && sets[0].label == sets[1].label) {
+        for (report::StationSet& set : sets) set.label = set.database;
+    }
+    for (const report::StationSet& set : sets) {
+        report::station_distances(set);  // no station rows: refused before any output
+    }
+    if (!args.svg.empty()) {
+        const bool spin = args.figure == "omega-v";
+        std::vector<report::MotionTrend> trends;
+        for (const report::StationSet& set : sets) {
+            trends.push_back(spin ? report::spin_speed_trend(set)
+                                  : report::velocity_change_trend(set));
+        }
+        write_svg(
+            args.svg,
+            spin ? report::spin_speed_figure(trends, "Angular speed against speed at the toe")
+                 : report::velocity_change_figure(trends, "V' against Cr at 4 m past the toe"));
+    }
+    report::write_stations(std::cout, format_of(args), sets);
+    if (!args.svg.empty() && format_of(args) == report::QueryFormat::text) {
+        std::cout << "figure written to " << args.svg << '\n';
+    }
 }
 
 std::vector<std::string> quantity_names() {
@@ -278,6 +317,28 @@ void register_query(CLI::App& app) {
     add_common(worst, *args);
     add_per(worst, *args);
     worst->callback([args] { run_worst(*args); });
+
+    CLI::App* stations = query->add_subcommand(
+        "stations",
+        "Rocks at each station by shape; seed 000's V' against Cr (Fig. 5) and angular speed "
+        "against speed (Fig. 6)");
+    CLI::Option* svg = stations->add_option(
+        "--svg", args->svg, "Also draw the --figure to this SVG file, one marker series per shape");
+    stations
+        ->add_option("--figure", args->figure,
+                     "vchange-cr: V' from the toe to 4 m against Cr at 4 m (seed 000 Fig. 5); "
+                     "omega-v: angular speed against speed at the toe with least-squares lines "
+                     "(Fig. 6)")
+        ->check(CLI::IsMember({"vchange-cr", "omega-v"}))
+        ->needs(svg)
+        ->capture_default_str();
+    stations
+        ->add_option("--compare", args->compare,
+                     "A second database (e.g. the same sweep with bars off), shown beside the "
+                     "first; each is labelled by its file name without extension")
+        ->check(CLI::ExistingFile);
+    add_common(stations, *args);
+    stations->callback([args] { run_stations(*args); });
 }
 
 }  // namespace rockfall::app

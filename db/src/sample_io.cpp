@@ -308,6 +308,22 @@ std::optional<SampleRecord> read_sample(sqlite3* db, const std::filesystem::path
     return record;
 }
 
+engine::StationCrossing station_from(const sql::Statement& row, int first) {
+    engine::StationCrossing s;
+    s.distance_from_toe = row.real(first);
+    s.reached = row.integer(first + 1) != 0;
+    if (!s.reached) return s;
+    s.time = row.real(first + 2);
+    s.speed = row.real(first + 3);
+    s.parallel_speed = row.real(first + 4);
+    s.angular_speed = row.real(first + 5);
+    s.bounce_height = row.real(first + 6);
+    s.rolling_coefficient = row.real(first + 7);
+    s.translational_energy = row.real(first + 8);
+    s.rotational_energy = row.real(first + 9);
+    return s;
+}
+
 bool read_rock(sqlite3* db, const std::filesystem::path& path, std::int64_t index,
                std::int64_t rock, risk::RockResult& result) {
     sql::Statement outcome(db, path,
@@ -332,26 +348,11 @@ bool read_rock(sqlite3* db, const std::filesystem::path& path, std::int64_t inde
     out.velocity_change = outcome.real(12);
 
     sql::Statement stations(db, path,
-                            "SELECT distance_from_toe_m, reached, time_s, speed_m_s, "
-                            "parallel_speed_m_s, angular_speed_rad_s, bounce_height_m, "
-                            "rolling_coefficient, translational_energy_J, rotational_energy_J "
-                            "FROM stations WHERE sample = ? AND rock = ? ORDER BY station");
+                            std::string("SELECT ") + station_columns +
+                                " FROM stations WHERE sample = ? AND rock = ? ORDER BY station");
     stations.bind_int(1, index);
     stations.bind_int(2, rock);
-    while (stations.step()) {
-        engine::StationCrossing& s = out.stations.emplace_back();
-        s.distance_from_toe = stations.real(0);
-        s.reached = stations.integer(1) != 0;
-        if (!s.reached) continue;
-        s.time = stations.real(2);
-        s.speed = stations.real(3);
-        s.parallel_speed = stations.real(4);
-        s.angular_speed = stations.real(5);
-        s.bounce_height = stations.real(6);
-        s.rolling_coefficient = stations.real(7);
-        s.translational_energy = stations.real(8);
-        s.rotational_energy = stations.real(9);
-    }
+    while (stations.step()) out.stations.push_back(station_from(stations, 0));
 
     sql::Statement impacts(
         db, path,

@@ -28,6 +28,15 @@ struct ResultsDb::Statements {
     sql::Statement trajectory;
 };
 
+/// The columns a station crossing is read from, in the order station_from() expects them.
+inline constexpr const char* station_columns =
+    "distance_from_toe_m, reached, time_s, speed_m_s, parallel_speed_m_s, angular_speed_rad_s, "
+    "bounce_height_m, rolling_coefficient, translational_energy_J, rotational_energy_J";
+
+/// A crossing from station_columns starting at column `first` of the current row; a station not
+/// reached keeps its defaults past `reached`.
+engine::StationCrossing station_from(const sql::Statement& row, int first);
+
 /// Reads rock `rock` of sample `index` (outcome, stations, wall impacts, trajectory) into
 /// `result`, whose inputs are read; false when its outcome is absent.
 bool read_rock(sqlite3* db, const std::filesystem::path& path, std::int64_t index,

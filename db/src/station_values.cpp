@@ -2,6 +2,7 @@
 
 #include "db/station_values.hpp"
 
+#include "sample_io.hpp"
 #include "sqlite.hpp"
 
 #include <algorithm>
@@ -44,6 +45,30 @@ std::vector<StationValues> read_station_values(const ResultsDb& db) {
         }
     }
     return stations;
+}
+
+std::vector<RockStations> read_rock_stations(const ResultsDb& db) {
+    // The primary key's order (sample, rock, station): one pass groups each rock's rows.
+    sql::Statement rows(db.handle(), db.path(),
+                        std::string("SELECT t.sample, t.rock, r.kind, r.shape, r.size_m, ") +
+                            station_columns +
+                            " FROM stations t JOIN rocks r ON r.sample = t.sample AND "
+                            "r.rock = t.rock ORDER BY t.sample, t.rock, t.station");
+    std::vector<RockStations> rocks;
+    while (rows.step()) {
+        const std::int64_t sample = rows.integer(0);
+        const std::int64_t rock = rows.integer(1);
+        if (rocks.empty() || rocks.back().sample != sample || rocks.back().rock != rock) {
+            RockStations& r = rocks.emplace_back();
+            r.sample = sample;
+            r.rock = rock;
+            r.kind = rows.text(2);
+            r.shape = rows.text(3);
+            r.size = rows.real(4);
+        }
+        rocks.back().stations.push_back(station_from(rows, 5));
+    }
+    return rocks;
 }
 
 }  // namespace rockfall::db

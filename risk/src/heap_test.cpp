@@ -40,22 +40,6 @@ void check_material(const std::string& field, const engine::Material& m) {
                           1.0, false, false);
 }
 
-// Least-squares slope of y on x (at least two distinct x).
-double fitted_slope(const std::vector<double>& x, const std::vector<double>& y) {
-    const double n = static_cast<double>(x.size());
-    double mx = 0.0, my = 0.0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        mx += x[i] / n;
-        my += y[i] / n;
-    }
-    double sxy = 0.0, sxx = 0.0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        sxy += (x[i] - mx) * (y[i] - my);
-        sxx += (x[i] - mx) * (x[i] - mx);
-    }
-    return sxy / sxx;
-}
-
 double bin_width_of(const HeapTestSpec& spec) {
     return spec.method.bin_width > 0.0 ? spec.method.bin_width : 0.5 * spec.heap.grading.d50;
 }
@@ -190,7 +174,7 @@ HeapProfile heap_profile(const HeapSurface& surface, double axis_x, double axis_
     profile.foot_radius = j < profile.radius.size() ? profile.radius[j] : max_radius;
     profile.fitted_points = static_cast<int>(x.size());
     profile.valid = profile.heap_height > 0.0 && x.size() >= 3;
-    if (profile.valid) profile.angle_deg = std::atan(-fitted_slope(x, y)) / kDegree;
+    if (profile.valid) profile.angle_deg = std::atan(-fit_line(x, y).slope) / kDegree;
     return profile;
 }
 

@@ -27,31 +27,21 @@ struct LeastSquares {
     double r_squared = 0.0;
 };
 
-// Ordinary least squares of y on x with centred sums (two passes, no cancellation in Sxx).
+// Ordinary least squares of y on x, with the scatter about the line.
 LeastSquares least_squares(const std::vector<double>& x, const std::vector<double>& y) {
     assert(x.size() == y.size() && x.size() >= 3);
     const double n = static_cast<double>(x.size());
-    const double x_mean = mean(x);
-    const double y_mean = mean(y);
-    double sxx = 0.0;
-    double sxy = 0.0;
-    double syy = 0.0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        sxx += (x[i] - x_mean) * (x[i] - x_mean);
-        sxy += (x[i] - x_mean) * (y[i] - y_mean);
-        syy += (y[i] - y_mean) * (y[i] - y_mean);
-    }
-    assert(sxx > 0.0);
+    const LineFit line = fit_line(x, y);
     LeastSquares fit;
-    fit.slope = sxy / sxx;
-    fit.intercept = y_mean - fit.slope * x_mean;
+    fit.slope = line.slope;
+    fit.intercept = line.intercept;
     double residuals = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) {
         const double r = y[i] - (fit.intercept + fit.slope * x[i]);
         residuals += r * r;
     }
     fit.residual_sd = std::sqrt(residuals / (n - 2.0));
-    fit.r_squared = syy > 0.0 ? 1.0 - residuals / syy : 1.0;
+    fit.r_squared = line.syy > 0.0 ? 1.0 - residuals / line.syy : 1.0;
     return fit;
 }
 

@@ -251,6 +251,26 @@ double standard_deviation(const std::vector<double>& sample) {
     return std::sqrt(sum / static_cast<double>(sample.size() - 1));
 }
 
+double LineFit::correlation() const { return syy > 0.0 ? sxy / std::sqrt(sxx * syy) : 0.0; }
+
+LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
+    require(x.size() == y.size(), "line fit: " + std::to_string(x.size()) + " x values but " +
+                                      std::to_string(y.size()) + " y values");
+    require(x.size() >= 2, "line fit needs at least 2 points");
+    const double x_mean = mean(x);
+    const double y_mean = mean(y);
+    LineFit fit;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        fit.sxx += (x[i] - x_mean) * (x[i] - x_mean);
+        fit.sxy += (x[i] - x_mean) * (y[i] - y_mean);
+        fit.syy += (y[i] - y_mean) * (y[i] - y_mean);
+    }
+    require(fit.sxx > 0.0, "line fit needs at least 2 distinct x values");
+    fit.slope = fit.sxy / fit.sxx;
+    fit.intercept = y_mean - fit.slope * x_mean;
+    return fit;
+}
+
 double student_t_quantile(double p, double dof) {
     detail::require(p > 0.0 && p < 1.0, "p = " + std::to_string(p) + ": must be in (0, 1)");
     detail::require_positive("dof", dof, "");

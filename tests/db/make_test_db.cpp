@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 10000000));
     app.add_flag("--uniform-reach", uniform_reach, "Sample i reaches 10 i / N m");
     app.add_option("--seed", options.seed, "Seed of the synthetic set");
+    app.add_option("--stations", options.stations, "Stations at 0, 3, 6, ... m past the toe");
     app.add_option("--application-id", application_id, "Stamp this application_id");
     app.add_option("--user-version", user_version, "Stamp this schema version");
     app.add_flag("--corrupt", corrupt, "Overwrite every page after the first");

@@ -1,11 +1,13 @@
 #pragma once
 /// What the rocks carried past each station of a sweep (table stations): for the per-station
-/// statistics and the UNI 11211-4 design values of the HTML report (`rockfall report`).
+/// statistics and the UNI 11211-4 design values of the HTML report (`rockfall report`), and
+/// each rock's crossings for `rockfall query DB stations` (seed 000's Figures 5 and 6).
 
 #include "db/results_db.hpp"
 
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace rockfall::db {
@@ -29,5 +31,23 @@ struct StationValues {
 
 /// Every station's values, by station number. Throws DatabaseError for a damaged file.
 std::vector<StationValues> read_station_values(const ResultsDb& db);
+
+/// One rock of one sample with its crossings of every station.
+struct RockStations {
+    /// Sample index (0-based) and rock index within the sample (0-based).
+    std::int64_t sample = 0;
+    std::int64_t rock = 0;
+    /// Shape family (sphere, massive, planar, custom) and shape (as samples.shape).
+    std::string kind;
+    std::string shape;
+    /// Nominal (volume-equivalent) diameter, m; NaN when not stored.
+    double size = std::numeric_limits<double>::quiet_NaN();
+    /// The crossings in station order (1-based station i at index i - 1), reached or not.
+    std::vector<engine::StationCrossing> stations;
+};
+
+/// Every rock with a station row, in (sample, rock) order. Throws DatabaseError for a damaged
+/// file.
+std::vector<RockStations> read_rock_stations(const ResultsDb& db);
 
 }  // namespace rockfall::db

@@ -88,4 +88,21 @@ double mean(const std::vector<double>& sample);
 /// Sample standard deviation with Bessel's correction (n - 1); the sample needs 2 values.
 double standard_deviation(const std::vector<double>& sample);
 
+/// An ordinary least-squares line y = intercept + slope x, with the sums it came from.
+struct LineFit {
+    /// Intercept, in the unit of y, and slope, in the unit of y per unit of x.
+    double intercept = 0.0;
+    double slope = 0.0;
+    /// Centred sums of squares and products: Sxx = sum (x - mean x)^2 (> 0), Sxy, Syy.
+    double sxx = 0.0;
+    double sxy = 0.0;
+    double syy = 0.0;
+    /// Pearson's correlation coefficient Sxy / sqrt(Sxx Syy), in [-1, 1]; 0 when Syy = 0.
+    double correlation() const;
+};
+
+/// Least squares of y on x with centred sums (two passes, no cancellation in Sxx). x and y of
+/// equal size with at least 2 distinct x; throws std::invalid_argument otherwise.
+LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
+
 }  // namespace rockfall::risk
