@@ -219,7 +219,7 @@ void owner_part(int samples, int per_message, const fs::path& dir, double thread
 int main(int argc, char** argv) {
     CLI::App cli{"MPI sweep benchmark: 1 against 2 ranks, and the owner's cost per sample"};
     std::string scenario = std::string(ROCKFALL_SAMPLES_DIR) + "/seed_sweep.toml";
-    int samples = 400;
+    int samples = 2000;  // 400 (5 s of sweep) measures start-up as much as the sweep
     int repeats = 3;
     int owner_samples = 200000;
     int per_message = 8;

@@ -1,9 +1,11 @@
 // `rockfall soil`: one soil flow (scenario C, MPM), summary or JSON, optional wall-load CSV,
-// particle frames for ParaView and a results database.
+// particle frames for ParaView and a results database; or, with --refine, a grid-refinement
+// study of the scenario with its Richardson extrapolation.
 
 #include "commands.hpp"
 #include "output_file.hpp"
 #include "report/query_table.hpp"
+#include "report/refine_report.hpp"
 #include "report/soil_report.hpp"
 #include "scenario/load_record.hpp"
 #include "scenario/soil_file.hpp"
@@ -11,21 +13,27 @@
 #include "sweep_record.hpp"
 
 #include "db/soil_run.hpp"
+#include "mpm/refine.hpp"
 #include "mpm/soil.hpp"
 #include "mpm/vtk.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 namespace rockfall::app {
 namespace {
@@ -40,6 +48,8 @@ struct SoilArgs {
     std::string db;
     std::string measured;
     std::string svg;
+    std::string refine;
+    std::optional<double> steady_window;
 };
 
 // Writes particle frames as DIR/frame_NNNNN.vtk. The solver's callback must not throw, so the
@@ -84,7 +94,125 @@ void write_csv(const fs::path& path, const db::SoilRunRecord& record) {
     file.commit();
 }
 
+// --refine H1,H2,H3[,...]: at least three cell sizes in m, each finite, > 0 and smaller than
+// the one before.
+std::vector<double> parse_cell_sizes(const std::string& text) {
+    const std::string allowed =
+        "; allowed: at least 3 cell sizes in m, each > 0 and smaller than the one before, "
+        "comma-separated (e.g. --refine 0.2,0.1,0.05)";
+    std::vector<double> cells;
+    for (std::size_t from = 0; from <= text.size();) {
+        const std::size_t comma = std::min(text.find(',', from), text.size());
+        const std::string item = text.substr(from, comma - from);
+        from = comma + 1;
+        char* end = nullptr;
+        const double value = std::strtod(item.c_str(), &end);
+        if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(value)) {
+            throw std::invalid_argument("--refine " + text + ": '" + item + "' is not a number" +
+                                        allowed);
+        }
+        if (!(value > 0.0) || (!cells.empty() && !(value < cells.back()))) {
+            std::ostringstream message;
+            message << "--refine " << text << ": cell size " << cells.size() + 1 << " = " << value
+                    << " m must be " << (value > 0.0 ? "smaller than the one before" : "> 0")
+                    << allowed;
+            throw std::invalid_argument(message.str());
+        }
+        cells.push_back(value);
+    }
+    if (cells.size() < 3) {
+        throw std::invalid_argument("--refine " + text + ": " + std::to_string(cells.size()) +
+                                    " cell sizes" + allowed);
+    }
+    return cells;
+}
+
+// Options of a single run that a refinement study does not take.
+void check_refine_args(const SoilArgs& args) {
+    const std::pair<const char*, const std::string*> single_run[] = {{"--vtk", &args.vtk_dir},
+                                                                     {"--csv", &args.csv},
+                                                                     {"--db", &args.db},
+                                                                     {"--measured", &args.measured},
+                                                                     {"--svg", &args.svg}};
+    for (const auto& [name, value] : single_run) {
+        if (!value->empty()) {
+            throw std::invalid_argument(std::string(name) +
+                                        " does not apply with --refine: a refinement study "
+                                        "prints its table (or --json) only");
+        }
+    }
+}
+
+void run_refinement_command(const SoilArgs& args) {
+    check_refine_args(args);
+    mpm::RefinementSettings settings;
+    settings.cell_sizes = parse_cell_sizes(args.refine);
+    const scenario::SoilFile file = scenario::load_soil_scenario(args.scenario);
+    const double duration = file.scenario.output.duration;
+    if (args.steady_window) {
+        const double w = *args.steady_window;
+        if (!(std::isfinite(w) && w > 0.0 && w <= duration)) {
+            std::ostringstream message;
+            message << "--steady-window = " << w
+                    << " s: must be in (0, output.duration = " << duration << " s] of "
+                    << args.scenario;
+            throw std::invalid_argument(message.str());
+        }
+        settings.steady_window = w;
+    } else {
+        settings.steady_window = std::min(settings.steady_window, duration);
+    }
+    report::RefinementContext context{
+        args.scenario, file.scenario.numerics.dimension, duration, settings.steady_window, {}};
+    const int count = static_cast<int>(settings.cell_sizes.size());
+    std::fprintf(stderr, "refinement study: %d levels of %g s of flow each\n", count, duration);
+    auto start = std::chrono::steady_clock::now();
+    const mpm::RefinementStudy study =
+        mpm::run_refinement(file.scenario, settings, [&](int i, const mpm::RefinementLevel& level) {
+            const auto now = std::chrono::steady_clock::now();
+            context.runtime.push_back(std::chrono::duration<double>(now - start).count());
+            start = now;
+            std::fprintf(stderr, "%s\n",
+                         report::refinement_progress_line(level, i, count, context.dimension,
+                                                          context.runtime.back())
+                             .c_str());
+        });
+    if (args.json) {
+        std::cout << report::refinement_json(study, context).dump(2) << '\n';
+    } else {
+        report::print_refinement(std::cout, study, context);
+    }
+}
+
+// The spring-backed wall's facing: how far it moved, against the cell size (the solver keeps
+// the wall's geometry in place, which holds for displacements well below a cell).
+void print_spring_wall(const mpm::SoilScenario& s, const mpm::SoilOutcome& outcome) {
+    const mpm::SoilBoundaries& b = s.boundaries;
+    const double h = s.numerics.cell_size;
+    std::printf(
+        "spring-backed wall (facing %g kg/m2, stiffness %g Pa/m, damping ratio %g): the wall "
+        "load is the spring and dashpot force; facing displaced at most %.3f mm (%.2f %% of a "
+        "cell), %.3f mm at the end\n",
+        b.wall_facing_mass, b.wall_stiffness, b.wall_damping_ratio,
+        1e3 * outcome.max_wall_displacement, 100.0 * outcome.max_wall_displacement / h,
+        1e3 * outcome.final_wall_displacement);
+    if (outcome.max_wall_displacement > 0.1 * h) {
+        std::printf(
+            "warning: the facing moved more than a tenth of a cell; the wall's geometry stays "
+            "in place, so the result is approximate (stiffen the wall or refine the cells "
+            "less)\n");
+    }
+    std::fflush(stdout);
+}
+
 void run_soil_command(const SoilArgs& args) {
+    if (!args.refine.empty()) {
+        run_refinement_command(args);
+        return;
+    }
+    if (args.steady_window) {
+        throw std::invalid_argument("--steady-window applies only with --refine");
+    }
     const scenario::SoilFile file = scenario::load_soil_scenario(args.scenario);
     // Read the measured record and refuse a mismatch (units, or no shared times) now rather
     // than after the run.
@@ -133,9 +261,15 @@ void run_soil_command(const SoilArgs& args) {
                                            measured ? &*measured : nullptr));
     }
 
+    const bool spring = file.scenario.boundaries.wall_support == mpm::WallSupport::spring;
     if (args.json) {
         nlohmann::json document = report::soil_json(record);
         document["scenario_file"] = args.scenario;
+        document["wall_support"] = spring ? "spring" : "rigid";
+        if (spring) {
+            document["max_wall_displacement_m"] = outcome.max_wall_displacement;
+            document["final_wall_displacement_m"] = outcome.final_wall_displacement;
+        }
         if (!args.db.empty()) document["database"] = args.db;
         if (comparison)
             document["measured_comparison"] =
@@ -144,6 +278,7 @@ void run_soil_command(const SoilArgs& args) {
         return;
     }
     report::print_soil_summary(std::cout, record, args.scenario);
+    if (spring) print_spring_wall(file.scenario, outcome);
     if (comparison) report::print_measured_comparison(std::cout, *comparison, *measured, record);
     if (!args.svg.empty()) std::cout << "wall-load figure written to " << args.svg << '\n';
     if (frames) std::cout << frames->count() << " VTK frames written to " << args.vtk_dir << '\n';
@@ -177,6 +312,13 @@ void register_soil(CLI::App& app) {
     cmd->add_option("--svg", args->svg,
                     "Write a figure of the wall-load history (with the measured one if given) "
                     "to this SVG file");
+    cmd->add_option("--refine", args->refine,
+                    "Run a grid-refinement study instead: the scenario at these cell sizes (m, "
+                    "at least 3, coarse to fine, comma-separated, e.g. 0.2,0.1,0.05), the table "
+                    "of peak and steady wall load and runout, and the Richardson extrapolation");
+    cmd->add_option("--steady-window", args->steady_window,
+                    "With --refine: the steady wall load is the mean over this last part of the "
+                    "run, s (default 1 s, at most output.duration)");
     cmd->callback([args] { run_soil_command(*args); });
 }
 

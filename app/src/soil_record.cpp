@@ -16,18 +16,6 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-const char* to_string(mpm::SoilStatus status) {
-    switch (status) {
-        case mpm::SoilStatus::completed:
-            return "completed";
-        case mpm::SoilStatus::left_domain:
-            return "left_domain";
-        case mpm::SoilStatus::non_finite:
-            return "non_finite";
-    }
-    return "unknown";
-}
-
 // A scene vector of a run: its y is NaN in 2D, where a plane-strain section has none.
 db::SceneVector scene(const mpm::Vec3& v, int dimension) {
     return {v.x(), dimension == 2 ? nan : v.y(), v.z()};
@@ -53,6 +41,13 @@ db::SoilRunRecord make_soil_record(const scenario::SoilFile& file, const mpm::So
         {"cell_size_m", s.numerics.cell_size},
         {"particles_per_cell", s.numerics.particles_per_cell},
         {"cfl", s.numerics.cfl},
+        {"align_grid", s.numerics.align_grid},
+        {"boundary_reach", s.numerics.boundary_reach},
+        {"wall_support",
+         s.boundaries.wall_support == mpm::WallSupport::spring ? "spring" : "rigid"},
+        {"wall_facing_mass_kg_m2", s.boundaries.wall_facing_mass},
+        {"wall_stiffness_Pa_m", s.boundaries.wall_stiffness},
+        {"wall_damping_ratio", s.boundaries.wall_damping_ratio},
         {"threads",
          s.numerics.threads}}.dump();
     r.run.started_at = times.started_at;
@@ -60,7 +55,7 @@ db::SoilRunRecord make_soil_record(const scenario::SoilFile& file, const mpm::So
     r.run.status = "complete";
 
     r.dimension = o.dimension;
-    r.outcome = to_string(o.status);
+    r.outcome = mpm::status_name(o.status);
     r.message = o.message;
     r.particles = o.particles;
     r.steps = o.steps;

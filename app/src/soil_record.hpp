@@ -24,9 +24,4 @@ struct SoilRunTimes {
 db::SoilRunRecord make_soil_record(const scenario::SoilFile& file, const mpm::SoilOutcome& outcome,
                                    const SoilRunTimes& times);
 
-/// The record of a finished run of `file`: the run (tool, scenario text and hash, settings),
-/// the summary and the histories; y components NaN in 2D.
-db::SoilRunRecord make_soil_record(const scenario::SoilFile& file, const mpm::SoilOutcome& outcome,
-                                   const SoilRunTimes& times);
-
 }  // namespace rockfall::app

@@ -93,6 +93,8 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
     detail::SoilModel<Dim> model = detail::build_soil_model<Dim>(scenario);
     Solver<Dim>& solver = *model.solver;
     const SoilOutput& output = scenario.output;
+    const bool spring =
+        scenario.boundaries.wall_support == WallSupport::spring && model.slope.wall();
     SoilOutcome outcome;
     outcome.dimension = Dim;
     outcome.particles = static_cast<long>(solver.particles().size());
@@ -115,9 +117,23 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
     while (solver.time() < duration - 1e-12) {
         const double t0 = solver.time();
         const double dt = std::min(solver.stable_time_step(), duration - t0);
+        // A non-finite particle speed or density makes the stable step NaN: stop with a status
+        // rather than step.
+        if (!(dt > 0.0 && std::isfinite(dt))) {
+            outcome.status = SoilStatus::non_finite;
+            outcome.message = "non-finite stable time step at t = " + std::to_string(t0) + " s";
+            break;
+        }
         const StepReport& report = solver.step(dt);
         const double t1 = solver.time();
-        const Vec3& impulse = report.impulse[detail::kWallGroup];
+        // A spring-backed wall's load is the force in its spring and dashpot (the load cell);
+        // its guides take the components along the face.
+        Vec3 impulse = report.impulse[detail::kWallGroup];
+        if (spring) {
+            impulse.x() = report.spring_impulse;
+            outcome.max_wall_displacement =
+                std::max(outcome.max_wall_displacement, solver.spring_displacement());
+        }
         outcome.step_time.push_back(t1);
         outcome.step_wall_load.push_back(impulse / dt);
         outcome.step_wall_force.push_back(impulse.x() / dt);
@@ -146,6 +162,7 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
         emit_frames();
     }
     outcome.steps = solver.step_count();
+    outcome.final_wall_displacement = solver.spring_displacement();
 
     const std::size_t recorded = outcome.sample_time.size();
     for (std::size_t k = 0; k < recorded; ++k) {
@@ -175,12 +192,30 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
         outcome.peak_wall_force_filtered =
             std::max(outcome.peak_wall_force_filtered, outcome.wall_force_filtered[k]);
     }
-    outcome.deposit = deposit_of(solver.particles(), model.slope, scenario.numerics.cell_size,
-                                 0.5 * model.particle_spacing);
+    if (outcome.status == SoilStatus::non_finite) {
+        // Positions that blew up have no deposit.
+        outcome.deposit.runout_x = std::numeric_limits<double>::quiet_NaN();
+        outcome.deposit.runout_past_toe = outcome.deposit.runout_x;
+    } else {
+        outcome.deposit = deposit_of(solver.particles(), model.slope, scenario.numerics.cell_size,
+                                     0.5 * model.particle_spacing);
+    }
     return outcome;
 }
 
 }  // namespace
+
+const char* status_name(SoilStatus status) {
+    switch (status) {
+        case SoilStatus::completed:
+            return "completed";
+        case SoilStatus::left_domain:
+            return "left_domain";
+        case SoilStatus::non_finite:
+            return "non_finite";
+    }
+    return "unknown";
+}
 
 std::vector<double> moving_average(const std::vector<double>& values, int window_samples) {
     const int n = static_cast<int>(values.size());

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -136,6 +137,19 @@ void validate(const SoilScenario& s) {
     problems.check(b.bed_friction_angle_deg >= 0.0 && b.bed_friction_angle_deg <= 89.0,
                    "boundaries.bed_friction_angle_deg", b.bed_friction_angle_deg, "deg",
                    "in [0, 89]");
+    if (b.wall_support == WallSupport::spring) {
+        problems.check(positive(b.wall_facing_mass), "boundaries.wall_facing_mass",
+                       b.wall_facing_mass, "kg/m2", "> 0");
+        problems.check(positive(b.wall_stiffness), "boundaries.wall_stiffness", b.wall_stiffness,
+                       "Pa/m", "> 0");
+        problems.check(b.wall_damping_ratio >= 0.0 && b.wall_damping_ratio <= 10.0,
+                       "boundaries.wall_damping_ratio", b.wall_damping_ratio, "", "in [0, 10]");
+        if (!s.slope.wall.enabled) {
+            problems.add(
+                "boundaries.wall_support = \"spring\": must be \"rigid\" without a wall "
+                "(slope.wall.enabled = false)");
+        }
+    }
     const SoilNumerics& n = s.numerics;
     problems.check(n.dimension == 2 || n.dimension == 3, "numerics.dimension", n.dimension, "",
                    "2 or 3");
@@ -143,6 +157,8 @@ void validate(const SoilScenario& s) {
     problems.check(n.particles_per_cell >= 1 && n.particles_per_cell <= 8,
                    "numerics.particles_per_cell", n.particles_per_cell, "", "in [1, 8]");
     problems.check(n.cfl > 0.0 && n.cfl <= 1.0, "numerics.cfl", n.cfl, "", "in (0, 1]");
+    problems.check(n.boundary_reach >= 0.0 && n.boundary_reach <= 0.5, "numerics.boundary_reach",
+                   n.boundary_reach, "", "in [0, 0.5]");
     problems.check(n.threads >= 0, "numerics.threads", n.threads, "", ">= 0");
     const SoilOutput& o = s.output;
     problems.check(positive(o.duration), "output.duration", o.duration, "s", "> 0");
@@ -265,12 +281,25 @@ SoilModel<Dim> build_soil_model(const SoilScenario& scenario) {
             anchor_z - std::ceil((anchor_z - settings.domain_min.z()) / h) * h;
     }
     settings.domain_max = hi + Vec3::Constant(3.0 * h);
+    settings.boundary_reach = scenario.numerics.boundary_reach;
     settings.cfl = scenario.numerics.cfl;
     settings.threads = scenario.numerics.threads;
     settings.max_time_step = scenario.output.sample_interval;
+    std::optional<SpringSupport> spring;
+    if (friction.wall_support == WallSupport::spring && slope.wall()) {
+        // One facing over the whole front face (per metre of width in 2D), moving along +x.
+        const double area = scenario.slope.wall.height * (Dim == 3 ? scenario.slope.width : 1.0);
+        spring = SpringSupport{};
+        spring->group = kWallGroup;
+        spring->direction = Vec3::UnitX();
+        spring->mass = friction.wall_facing_mass * area;
+        spring->stiffness = friction.wall_stiffness * area;
+        spring->damping =
+            2.0 * friction.wall_damping_ratio * std::sqrt(spring->stiffness * spring->mass);
+    }
     model.solver =
         std::make_unique<Solver<Dim>>(settings, Material{scenario.material}, std::move(particles),
-                                      std::move(statics), std::vector<HingedBoundary>{bed});
+                                      std::move(statics), std::vector<HingedBoundary>{bed}, spring);
     return model;
 }
 

@@ -37,12 +37,13 @@ void require(bool ok, const char* field, double value, const char* unit, const c
 template <int Dim>
 Solver<Dim>::Solver(const SolverSettings& settings, const Material& material,
                     Particles<Dim> particles, std::vector<StaticBoundary> statics,
-                    std::vector<HingedBoundary> hinged)
+                    std::vector<HingedBoundary> hinged, std::optional<SpringSupport> spring)
     : settings_(settings),
       material_(material),
       particles_(std::move(particles)),
       statics_(std::move(statics)),
       hinged_(std::move(hinged)),
+      spring_(spring),
       work_(std::make_unique<Workspace>()) {
     const SolverSettings& s = settings_;
     require(std::isfinite(s.cell_size) && s.cell_size > 0.0, "cell_size", s.cell_size, "m", "> 0");
@@ -90,6 +91,23 @@ Solver<Dim>::Solver(const SolverSettings& settings, const Material& material,
                 b.friction_coefficient, "", ">= 0");
     }
     work_->bodies.resize(hinged_.size());
+    if (spring_) {
+        const SpringSupport& k = *spring_;
+        require(k.group >= 0 && k.group < kBoundaryGroups, "spring.group", k.group, "",
+                "in [0, kBoundaryGroups)");
+        require(std::abs(k.direction.norm() - 1.0) < 1e-9, "spring.direction length",
+                k.direction.norm(), "", "1");
+        require(std::isfinite(k.mass) && k.mass > 0.0, "spring.mass", k.mass,
+                Dim == 2 ? "kg/m" : "kg", "> 0");
+        require(std::isfinite(k.stiffness) && k.stiffness > 0.0, "spring.stiffness", k.stiffness,
+                Dim == 2 ? "N/m per m" : "N/m", "> 0");
+        require(std::isfinite(k.damping) && k.damping >= 0.0, "spring.damping", k.damping,
+                Dim == 2 ? "N s/m per m" : "N s/m", ">= 0");
+        for (const HingedBoundary& b : hinged_) {
+            require(b.group != k.group, "hinged[].group", b.group, "",
+                    "other than the spring-backed group");
+        }
+    }
 
     const double h = s.cell_size;
     for (std::size_t p = 0; p < particles_.size(); ++p) {
@@ -138,6 +156,9 @@ const StepReport& Solver<Dim>::step(double dt) {
     }
     particles_to_grid(dt);
     update_grid(dt);
+    if (spring_) {
+        update_spring(dt);
+    }
     grid_to_particles(dt);
     time_ += dt;
     ++step_count_;
@@ -193,6 +214,10 @@ void Solver<Dim>::update_grid(double dt) {
     if (w.slot_impulse.size() < active.size()) {
         w.slot_impulse.resize(active.size());
     }
+    const int spring_group = spring_ ? spring_->group : -1;
+    if (spring_ && w.slot_spring_nodes.size() < active.size()) {
+        w.slot_spring_nodes.resize(active.size());
+    }
     const Vec<Dim> gravity = from_scene<Dim>(settings_.gravity);
     w.pool->run(w.slot_split, [&](int i) {
         const auto slot = static_cast<std::size_t>(active[static_cast<std::size_t>(i)]);
@@ -212,6 +237,9 @@ void Solver<Dim>::update_grid(double dt) {
         for (auto& g : impulse) {
             g.setZero();
         }
+        if (spring_) {
+            w.slot_spring_nodes[static_cast<std::size_t>(i)].clear();
+        }
         const IVec<Dim> first_node = kBlockEdge * grid.block_of_slot[slot];
         for (int j = 0; j < kBlockNodes<Dim>; ++j) {
             Node<Dim>& node = nodes[j];
@@ -230,6 +258,13 @@ void Solver<Dim>::update_grid(double dt) {
                     const auto& constraint = r.constraints[static_cast<std::size_t>(c)];
                     const StaticBoundary& solid =
                         statics_[static_cast<std::size_t>(constraint.boundary)];
+                    if (solid.group == spring_group) {
+                        // The facing's velocity is solved with all its nodes (update_spring).
+                        w.slot_spring_nodes[static_cast<std::size_t>(i)].push_back(
+                            {slot * kBlockNodes<Dim> + static_cast<std::size_t>(j),
+                             constraint.normal, constraint.boundary});
+                        continue;
+                    }
                     const Vec<Dim> before = v;
                     detail::apply_boundary<Dim>(v, constraint.normal, Vec<Dim>::Zero(), solid.kind,
                                                 solid.friction_coefficient);
@@ -260,6 +295,74 @@ void Solver<Dim>::update_grid(double dt) {
                 w.slot_impulse[static_cast<std::size_t>(i)][static_cast<std::size_t>(g)];
         }
     }
+}
+
+// Phase 3, the spring-backed facing: its velocity w' at the end of the step and the velocities
+// of the nodes it constrains, solved together. The facing's momentum over the step,
+//   m_f (w' - w) = P(w') - dt (k (u + u') / 2 + c (w + w') / 2),  u' = u + dt (w + w') / 2,
+// (trapezoidal rule) with P(w') the momentum along d the nodes lose when constrained by a
+// solid moving at w' d, is A w' - B - P(w') = 0 with A = m_f + dt^2 k / 4 + dt c / 2 and
+// B = m_f w - dt k u - (dt^2 k / 4 + dt c / 2) w. P never increases with w', so the left side
+// increases strictly: bracketed, then bisected (fixed order over the nodes: deterministic).
+template <int Dim>
+void Solver<Dim>::update_spring(double dt) {
+    const SpringSupport& k = *spring_;
+    Grid& grid = *grid_;
+    Workspace& w = *work_;
+    const Vec<Dim> d = from_scene<Dim>(k.direction);
+    const std::size_t count = w.active_slots.size();
+    auto constrained = [&](const typename Workspace::SpringNode& n, double facing) {
+        Vec<Dim> v = grid.data[n.node].template head<Dim>();
+        const StaticBoundary& solid = statics_[static_cast<std::size_t>(n.boundary)];
+        detail::apply_boundary<Dim>(v, n.normal, facing * d, solid.kind,
+                                    solid.friction_coefficient);
+        return v;
+    };
+    auto lost_momentum = [&](double facing) {
+        double lost = 0.0;
+        for (std::size_t i = 0; i < count; ++i) {
+            for (const auto& n : w.slot_spring_nodes[i]) {
+                const Node<Dim>& node = grid.data[n.node];
+                lost += node[Dim] * (node.template head<Dim>() - constrained(n, facing)).dot(d);
+            }
+        }
+        return lost;
+    };
+    const double coupling = 0.25 * dt * dt * k.stiffness + 0.5 * dt * k.damping;
+    const double a = k.mass + coupling;
+    const double b = k.mass * spring_w_ - dt * k.stiffness * spring_u_ - coupling * spring_w_;
+    auto residual = [&](double facing) { return a * facing - b - lost_momentum(facing); };
+    double lo = spring_w_;
+    double hi = spring_w_;
+    double step = std::max(1e-6, std::abs(residual(spring_w_)) / a);
+    while (residual(lo) > 0.0) {
+        lo -= step;
+        step *= 2.0;
+    }
+    while (residual(hi) < 0.0) {
+        hi += step;
+        step *= 2.0;
+    }
+    for (int iteration = 0; iteration < 200 && hi - lo > 1e-14 * std::max(1.0, std::abs(hi));
+         ++iteration) {
+        const double mid = 0.5 * (lo + hi);
+        (residual(mid) > 0.0 ? hi : lo) = mid;
+    }
+    const double facing = 0.5 * (lo + hi);
+    Vec3& impulse = report_.impulse[static_cast<std::size_t>(k.group)];
+    for (std::size_t i = 0; i < count; ++i) {
+        for (const auto& n : w.slot_spring_nodes[i]) {
+            Node<Dim>& node = grid.data[n.node];
+            const Vec<Dim> v = constrained(n, facing);
+            impulse += to_scene<Dim>(node[Dim] * (node.template head<Dim>() - v));
+            node.template head<Dim>() = v;
+        }
+    }
+    const double u_next = spring_u_ + 0.5 * dt * (spring_w_ + facing);
+    report_.spring_impulse =
+        dt * (0.5 * k.stiffness * (spring_u_ + u_next) + 0.5 * k.damping * (spring_w_ + facing));
+    spring_u_ = u_next;
+    spring_w_ = facing;
 }
 
 namespace {

@@ -104,6 +104,14 @@ struct Solver<Dim>::Workspace {
     std::vector<detail::Contribution> contributions;
     std::vector<std::int32_t> contribution_cursor;
     std::vector<std::array<Vec3, kBoundaryGroups>> slot_impulse;
+    // Per active slot, its nodes constrained by the spring-backed facing, left for
+    // update_spring (index into the grid's node data, constraint normal, solid).
+    struct SpringNode {
+        std::size_t node;
+        Vec<Dim> normal;
+        int boundary;
+    };
+    std::vector<std::vector<SpringNode>> slot_spring_nodes;
     std::vector<detail::Bounds> static_bounds;
     std::vector<detail::PlacedBody> bodies;
     Particles<Dim> scratch;

@@ -52,19 +52,29 @@ inline const Fields<mpm::SoilRelease, 9> soil_release_fields{{
     {"side_board_height", &mpm::SoilRelease::side_board_height, "m", detail::non_negative()},
 }};
 
-inline const Fields<mpm::SoilBoundaries, 3> soil_boundary_fields{{
+inline const Fields<mpm::SoilBoundaries, 6> soil_boundary_fields{{
     {"basal_friction_angle_deg", &mpm::SoilBoundaries::basal_friction_angle_deg, "deg",
      detail::closed(0.0, 89.0)},
     {"bed_friction_angle_deg", &mpm::SoilBoundaries::bed_friction_angle_deg, "deg",
      detail::closed(0.0, 89.0)},
     {"wall_fixed", &mpm::SoilBoundaries::wall_fixed, "", {}},
+    {"wall_facing_mass", &mpm::SoilBoundaries::wall_facing_mass, "kg/m2", detail::positive()},
+    {"wall_stiffness", &mpm::SoilBoundaries::wall_stiffness, "Pa/m", detail::positive()},
+    {"wall_damping_ratio", &mpm::SoilBoundaries::wall_damping_ratio, "", detail::closed(0.0, 10.0)},
 }};
 
-inline const Fields<mpm::SoilNumerics, 5> soil_numerics_fields{{
+inline constexpr std::array<detail::EnumName<mpm::WallSupport>, 2> wall_support_names{{
+    {"rigid", mpm::WallSupport::rigid},
+    {"spring", mpm::WallSupport::spring},
+}};
+
+inline const Fields<mpm::SoilNumerics, 7> soil_numerics_fields{{
     {"dimension", &mpm::SoilNumerics::dimension, "", detail::closed(2, 3)},
     {"cell_size", &mpm::SoilNumerics::cell_size, "m", detail::positive()},
     {"particles_per_cell", &mpm::SoilNumerics::particles_per_cell, "", detail::closed(1, 8)},
     {"cfl", &mpm::SoilNumerics::cfl, "", Range{0.0, 1.0, true, false}},
+    {"align_grid", &mpm::SoilNumerics::align_grid, "", {}},
+    {"boundary_reach", &mpm::SoilNumerics::boundary_reach, "", detail::closed(0.0, 0.5)},
     {"threads", &mpm::SoilNumerics::threads, "", detail::non_negative()},
 }};
 
@@ -106,6 +116,7 @@ mpm::SoilScenario read_soil(const toml::table& root, std::string& name, detail::
     });
     detail::with_table(r, "boundaries", [&](TableReader& s) {
         detail::read_fields(s, scenario.boundaries, soil_boundary_fields);
+        detail::read_enum(s, "wall_support", wall_support_names, scenario.boundaries.wall_support);
     });
     detail::with_table(r, "numerics", [&](TableReader& s) {
         detail::read_fields(s, scenario.numerics, soil_numerics_fields);
@@ -143,7 +154,12 @@ void check_soil(const mpm::SoilScenario& s, const detail::SourceMap& sources,
             format_number(s.release.initial_bed_angle_deg) + " deg",
             "must be in [0, bed_angle_deg = " + format_number(s.release.bed_angle_deg) + " deg]");
     }
-    c.check_fields(s.boundaries, "boundaries", soil_boundary_fields);
+    const bool boundaries_ok = c.check_fields(s.boundaries, "boundaries", soil_boundary_fields);
+    if (boundaries_ok && s.boundaries.wall_support == mpm::WallSupport::spring &&
+        !s.slope.wall.enabled) {
+        c.fail("boundaries.wall_support", "\"spring\"",
+               "must be \"rigid\" without a wall (slope.wall.enabled = false)");
+    }
     c.check_fields(s.numerics, "numerics", soil_numerics_fields);
     const bool output_ok = c.check_fields(s.output, "output", soil_output_fields);
     if (output_ok && s.output.sample_interval > s.output.duration) {

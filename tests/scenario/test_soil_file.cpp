@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -23,6 +24,25 @@ const fs::path bad = fs::path(ROCKFALL_SOIL_DATA_DIR);
 ScenarioError load_error(const fs::path& file) {
     return rockfall::test::load_error(
         [](const fs::path& f) { rockfall::scenario::load_soil_scenario(f); }, file);
+}
+
+// The error of parsing soil scenario `text` named `source` (fails the test if it parses).
+ScenarioError parse_error(const std::string& text, const std::string& source) {
+    try {
+        rockfall::scenario::parse_soil_scenario(text, source);
+    } catch (const ScenarioError& error) {
+        return error;
+    }
+    FAIL("parsing " << source << " did not throw");
+    throw std::logic_error("unreachable");
+}
+
+// Checks that `key` is reported at `line` of inline text, with each of `parts`.
+void expect_at(const ScenarioError& error, const std::string& key, int line,
+               std::initializer_list<std::string> parts) {
+    const ScenarioProblem problem = problem_for(error, key);
+    CHECK(problem.line == line);
+    for (const std::string& part : parts) CHECK_THAT(problem.message, Contains(part));
 }
 
 // Checks that `key` is reported at the line of `file` that contains `needle`, with a message
@@ -146,4 +166,46 @@ TEST_CASE("soil file: with extends, the text is the merged scenario and stands a
     CHECK(again.scenario.numerics.dimension == 2);
     CHECK(again.scenario.slope.wall.distance_from_toe ==
           file.scenario.slope.wall.distance_from_toe);
+}
+
+TEST_CASE("soil file: grid placement keys", "[scenario][soil]") {
+    const rockfall::scenario::SoilFile file = rockfall::scenario::parse_soil_scenario(
+        "[numerics]\nalign_grid = false\nboundary_reach = 0.5\n", "grid.toml");
+    CHECK_FALSE(file.scenario.numerics.align_grid);
+    CHECK(file.scenario.numerics.boundary_reach == 0.5);
+    const rockfall::scenario::SoilFile defaults =
+        rockfall::scenario::parse_soil_scenario("", "defaults.toml");
+    CHECK(defaults.scenario.numerics.align_grid);
+    CHECK(defaults.scenario.numerics.boundary_reach == 0.0);
+    const ScenarioError error =
+        parse_error("[numerics]\ncell_size = 0.1\nalign_grid = \"no\"\nboundary_reach = 0.7\n",
+                    "bad_grid.toml");
+    CHECK(error.problems().size() == 2);
+    expect_at(error, "numerics.align_grid", 3, {"\"no\"", "must be true or false"});
+    expect_at(error, "numerics.boundary_reach", 4, {"0.7", "must be in [0, 0.5]"});
+    CHECK_THAT(std::string(error.what()), Contains("bad_grid.toml:4"));
+}
+
+TEST_CASE("soil file: spring-backed wall keys", "[scenario][soil]") {
+    const rockfall::scenario::SoilFile file = rockfall::scenario::parse_soil_scenario(
+        "[boundaries]\nwall_support = \"spring\"\nwall_facing_mass = 30\nwall_stiffness = 2e6\n"
+        "wall_damping_ratio = 0.7\n",
+        "spring.toml");
+    const rockfall::mpm::SoilBoundaries& b = file.scenario.boundaries;
+    CHECK(b.wall_support == rockfall::mpm::WallSupport::spring);
+    CHECK(b.wall_facing_mass == 30.0);
+    CHECK(b.wall_stiffness == 2e6);
+    CHECK(b.wall_damping_ratio == 0.7);
+    CHECK(rockfall::scenario::parse_soil_scenario("", "rigid.toml")
+              .scenario.boundaries.wall_support == rockfall::mpm::WallSupport::rigid);
+    const ScenarioError error = parse_error(
+        "[boundaries]\nwall_support = \"elastic\"\nwall_stiffness = 0\nwall_damping_ratio = 11\n",
+        "bad_spring.toml");
+    CHECK(error.problems().size() == 3);
+    expect_at(error, "boundaries.wall_support", 2, {"must be one of \"rigid\", \"spring\""});
+    expect_at(error, "boundaries.wall_stiffness", 3, {"0 Pa/m", "must be > 0"});
+    expect_at(error, "boundaries.wall_damping_ratio", 4, {"must be in [0, 10]"});
+    const ScenarioError no_wall = parse_error(
+        "[slope.wall]\nenabled = false\n[boundaries]\nwall_support = \"spring\"\n", "no_wall.toml");
+    expect_at(no_wall, "boundaries.wall_support", 4, {"must be \"rigid\" without a wall"});
 }

@@ -42,6 +42,26 @@ struct StaticBoundary {
     int group = 0;
 };
 
+/// A spring-backed boundary group: its static solids form one rigid facing of mass `mass` that
+/// translates along `direction`, held by a spring and a dashpot in parallel on a fixed support
+/// (a load cell behind a panel). Its motion is solved each step together with the grid nodes it
+/// constrains (m_f dw/dt = F_soil - k u - c w, trapezoidal rule, implicit in w: stable for any
+/// stiffness and any mass of soil against it). Small displacements: the solids stay where
+/// they are and only their velocity w direction acts on the nodes, so |u| must stay well
+/// below the cell size.
+struct SpringSupport {
+    /// Boundary group whose static solids are the facing, [0, kBoundaryGroups).
+    int group = 1;
+    /// Direction of translation (scene frame, unit length); u > 0 moves the facing along it.
+    Vec3 direction = Vec3::UnitX();
+    /// Facing mass, kg (kg/m in 2D), > 0.
+    double mass = 1.0;
+    /// Spring stiffness, N/m (N/m per metre of width in 2D), > 0.
+    double stiffness = 1.0;
+    /// Dashpot coefficient, N s/m (per metre of width in 2D), >= 0.
+    double damping = 0.0;
+};
+
 /// A rigid body of boxes rotating about a horizontal axis parallel to scene y (the release
 /// bed). A positive angle lifts the body's -x side: scene points rotate by R_y(angle) about
 /// the hinge. The angle ramps linearly from start to end over [start_time, start_time +

@@ -43,6 +43,16 @@ struct SoilRelease {
     double side_board_height = 0.3;
 };
 
+/// How the reaction wall is held.
+enum class WallSupport {
+    /// Rigid: the wall does not move (the paper's MPM model, and the default).
+    rigid,
+    /// A facing of areal mass wall_facing_mass on a spring of areal stiffness wall_stiffness and
+    /// a dashpot in parallel (SpringSupport): a panel in front of a load cell. The wall load is
+    /// then the spring and dashpot force, what the load cell measures.
+    spring,
+};
+
 /// Boundary friction: the slope surface is frictional; the reaction wall is fixed (seed).
 struct SoilBoundaries {
     /// Basal friction angle of the slope surface and side walls, degrees, [0, 89]; seed 30.
@@ -51,6 +61,17 @@ struct SoilBoundaries {
     double bed_friction_angle_deg = 30.0;
     /// Reaction wall as a fixed (no-slip, seed) boundary; false = frictional at the basal angle.
     bool wall_fixed = true;
+    /// Rigid (default) or spring-backed reaction wall; the facing is the whole front face
+    /// (wall height times the slope width, times 1 m in 2D) and moves normal to it.
+    WallSupport wall_support = WallSupport::rigid;
+    /// Facing mass per area of the face, kg/m2 (> 0); default 24, a 10 mm concrete panel
+    /// (2400 kg/m3), seed 000's facing in front of its load cell.
+    double wall_facing_mass = 24.0;
+    /// Spring stiffness per area of the face, Pa/m (N/m per m2, > 0); default 1e7: 1 mm under
+    /// 10 kPa, the order of the seed flow's pressures (the paper gives no value).
+    double wall_stiffness = 1.0e7;
+    /// Damping ratio of the facing on its spring, c / (2 sqrt(k m_f)), [0, 10]; default 0.05.
+    double wall_damping_ratio = 0.05;
 };
 
 /// Discretisation and threads.
@@ -68,9 +89,14 @@ struct SoilNumerics {
     /// (x = wall_x) and on the run-out surface (z of the toe), whatever the cell size, so those
     /// two boundaries act exactly at their surface; without a wall, on the toe's x. false: the
     /// grid's first node is 3 cells below and behind the bed and slope (the placement before
-    /// this field), and a boundary between node planes acts at the node layer nearest its
-    /// surface, within h/2 of it (SolverSettings::boundary_reach).
+    /// this field), and a boundary between node planes acts where boundary_reach puts it.
     bool align_grid = true;
+    /// How far outside a solid a grid node may lie and still be constrained by it, as a
+    /// fraction of cell_size, [0, 0.5] (SolverSettings::boundary_reach). 0 (default): nodes on or
+    /// inside the solid only, so a surface between node planes (the inclined slope segments,
+    /// and with align_grid false the wall) acts up to one cell behind its true place; 0.5: the
+    /// node layer nearest the surface, within h/2 of it.
+    double boundary_reach = 0.0;
     /// Worker threads (>= 0; 0 = all available).
     int threads = 0;
 };
@@ -119,6 +145,9 @@ enum class SoilStatus {
     /// A non-finite particle state appeared; the run stopped.
     non_finite,
 };
+
+/// The status as stored and printed: "completed", "left_domain" or "non_finite".
+const char* status_name(SoilStatus status);
 
 /// The deposit at the end of the run.
 struct SoilDeposit {
@@ -177,6 +206,10 @@ struct SoilOutcome {
     double peak_wall_force_filtered = 0.0;
     /// Total impulse on the wall, N s.
     double wall_impulse = 0.0;
+    /// Spring-backed wall: largest displacement of the facing (along +x, away from the soil)
+    /// and its displacement at the end, m; 0 for a rigid wall.
+    double max_wall_displacement = 0.0;
+    double final_wall_displacement = 0.0;
     /// Final deposit.
     SoilDeposit deposit;
 };

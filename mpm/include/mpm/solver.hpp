@@ -33,6 +33,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace rockfall::mpm {
@@ -86,6 +87,9 @@ struct StepReport {
     /// Momentum each boundary group removed from the grid this step (scene frame), N s;
     /// divided by dt it is the force the soil exerts on that group.
     std::array<Vec3, kBoundaryGroups> impulse = zero_impulses();
+    /// Impulse the spring and dashpot of the SpringSupport (if any) passed to the fixed support
+    /// this step, along its direction, N s: divided by dt it is the load-cell force.
+    double spring_impulse = 0.0;
     /// Particles pulled back inside the grid domain this step (0 unless the domain is too small).
     int clamped_particles = 0;
     /// Largest particle speed after the step, m/s.
@@ -98,11 +102,13 @@ class Solver {
   public:
     static_assert(Dim == 2 || Dim == 3, "the solver is 2D (plane strain) or 3D");
 
-    /// Builds the grid and classifies boundary nodes lazily as the particles reach them.
-    /// Throws std::invalid_argument for invalid settings, material or boundaries, or for
+    /// Builds the grid and classifies boundary nodes lazily as the particles reach them; with
+    /// `spring`, the static solids of its group are a spring-backed facing. Throws
+    /// std::invalid_argument for invalid settings, material, boundaries or spring, or for
     /// particles outside the domain.
     Solver(const SolverSettings& settings, const Material& material, Particles<Dim> particles,
-           std::vector<StaticBoundary> statics, std::vector<HingedBoundary> hinged = {});
+           std::vector<StaticBoundary> statics, std::vector<HingedBoundary> hinged = {},
+           std::optional<SpringSupport> spring = std::nullopt);
     ~Solver();
     Solver(const Solver&) = delete;
     Solver& operator=(const Solver&) = delete;
@@ -131,6 +137,10 @@ class Solver {
     int threads() const { return threads_; }
     /// Grid nodes allocated so far (block-sparse grid), for memory reports.
     long allocated_nodes() const;
+    /// Displacement of the spring-backed facing along its direction, m (0 without one).
+    double spring_displacement() const { return spring_u_; }
+    /// Velocity of the spring-backed facing along its direction, m/s (0 without one).
+    double spring_velocity() const { return spring_w_; }
 
   private:
     struct Grid;
@@ -139,6 +149,7 @@ class Solver {
     void bin_particles();
     void particles_to_grid(double dt);
     void update_grid(double dt);
+    void update_spring(double dt);
     void grid_to_particles(double dt);
     void reorder_particles();
 
@@ -147,6 +158,9 @@ class Solver {
     Particles<Dim> particles_;
     std::vector<StaticBoundary> statics_;
     std::vector<HingedBoundary> hinged_;
+    std::optional<SpringSupport> spring_;
+    double spring_u_ = 0.0;
+    double spring_w_ = 0.0;
     std::unique_ptr<Grid> grid_;
     std::unique_ptr<Workspace> work_;
     StepReport report_;

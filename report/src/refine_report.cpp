@@ -1,0 +1,146 @@
+#include "report/refine_report.hpp"
+
+#include "report/query_table.hpp"
+#include "report/text_format.hpp"
+
+#include <cmath>
+
+namespace rockfall::report {
+namespace {
+
+// Text loads in kN (kN/m for a plane-strain section); JSON keys in N with a `_per_m` suffix.
+struct LoadUnits {
+    const char* text;
+    bool per_metre;
+    std::string key(const std::string& base) const { return per_metre ? base + "_per_m" : base; }
+};
+
+LoadUnits load_units(int dimension) { return {dimension == 2 ? "kN/m" : "kN", dimension == 2}; }
+
+// One extrapolated quantity: name, unit in the text, key of its value in JSON, scale from the
+// study's unit to the text's (1e-3 for N to kN).
+struct Quantity {
+    const char* name;
+    std::string unit;
+    std::string key;
+    double scale;
+    const mpm::RichardsonEstimate mpm::RefinementStudy::*estimate;
+};
+
+std::vector<Quantity> quantities(int dimension) {
+    const LoadUnits u = load_units(dimension);
+    return {
+        {"peak wall load", u.text, u.key("peak_wall_force_N"), 1e-3,
+         &mpm::RefinementStudy::peak_wall_force},
+        {"time of peak", "s", "peak_time_s", 1.0, &mpm::RefinementStudy::peak_time},
+        {"steady wall load", u.text, u.key("steady_wall_force_N"), 1e-3,
+         &mpm::RefinementStudy::steady_wall_force},
+        {"runout past toe", "m", "runout_past_toe_m", 1.0, &mpm::RefinementStudy::runout_past_toe},
+    };
+}
+
+std::string status_note(const mpm::RefinementLevel& level) {
+    return level.status == mpm::SoilStatus::completed
+               ? ""
+               : std::string(" (") + mpm::status_name(level.status) + ")";
+}
+
+}  // namespace
+
+std::string refinement_progress_line(const mpm::RefinementLevel& level, int index, int count,
+                                     int dimension, double runtime) {
+    const LoadUnits u = load_units(dimension);
+    return "refinement level " + std::to_string(index + 1) + " of " + std::to_string(count) +
+           ": cell " + fmt("%g m", level.cell_size) + ", " + std::to_string(level.particles) +
+           " particles, peak " + fmt("%.2f ", 1e-3 * level.peak_wall_force) + u.text + ", steady " +
+           fmt("%.2f ", 1e-3 * level.steady_wall_force) + u.text + ", " + fmt("%.1f s", runtime) +
+           status_note(level);
+}
+
+void print_refinement(std::ostream& out, const mpm::RefinementStudy& study,
+                      const RefinementContext& context) {
+    const LoadUnits u = load_units(context.dimension);
+    const bool timed = context.runtime.size() == study.levels.size();
+    out << "refinement study of " << context.scenario << ": "
+        << (u.per_metre ? "2D plane strain, loads per metre of width" : "3D") << ", "
+        << fmt("%g s", context.duration) << " of flow; steady load = mean over the last "
+        << fmt("%g s", context.steady_window) << '\n';
+    const std::string load = std::string("(") + u.text + ")";
+    char line[256];
+    std::snprintf(line, sizeof line, "%10s %9s %8s %12s %10s %13s %10s", "cell (m)", "particles",
+                  "steps", ("peak " + load).c_str(), "t peak (s)", ("steady " + load).c_str(),
+                  "runout (m)");
+    out << line << (timed ? "    run (s)" : "") << '\n';
+    for (std::size_t i = 0; i < study.levels.size(); ++i) {
+        const mpm::RefinementLevel& l = study.levels[i];
+        std::snprintf(line, sizeof line, "%10.4f %9ld %8ld %12.3f %10.3f %13.3f %10.3f",
+                      l.cell_size, l.particles, l.steps, 1e-3 * l.peak_wall_force, l.peak_time,
+                      1e-3 * l.steady_wall_force, l.runout_past_toe);
+        out << line << (timed ? fmt(" %10.1f", context.runtime[i]) : "") << status_note(l) << '\n';
+    }
+    if (!study.extrapolated) {
+        out << "no extrapolation: it needs three levels\n";
+        return;
+    }
+    out << "Richardson extrapolation from the three finest levels (refinement ratio "
+        << fmt("%.3f", study.ratio) << "):\n";
+    for (const Quantity& q : quantities(context.dimension)) {
+        const mpm::RichardsonEstimate& e = study.*q.estimate;
+        std::snprintf(line, sizeof line, "  %-17s", q.name);
+        out << line;
+        if (!e.monotone) {
+            out << "not converging monotonically: no extrapolation; finest change "
+                << fmt("%.1f %%", 100.0 * e.finest_change) << '\n';
+            continue;
+        }
+        out << fmt("%.4g ", q.scale * e.extrapolated) << q.unit << ", observed order "
+            << (std::isnan(e.order) ? std::string("undefined (two finest equal)")
+                                    : fmt("%.2f", e.order))
+            << ", finest change " << fmt("%.1f %%", 100.0 * e.finest_change) << ", GCI "
+            << fmt("%.1f %%", 100.0 * e.gci_fine) << '\n';
+    }
+}
+
+nlohmann::ordered_json refinement_json(const mpm::RefinementStudy& study,
+                                       const RefinementContext& context) {
+    const LoadUnits u = load_units(context.dimension);
+    const bool timed = context.runtime.size() == study.levels.size();
+    nlohmann::ordered_json levels = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < study.levels.size(); ++i) {
+        const mpm::RefinementLevel& l = study.levels[i];
+        nlohmann::ordered_json level = {
+            {"cell_size_m", l.cell_size},
+            {"particles", l.particles},
+            {"steps", l.steps},
+            {"status", mpm::status_name(l.status)},
+            {u.key("peak_wall_force_N"), l.peak_wall_force},
+            {"peak_time_s", l.peak_time},
+            {u.key("steady_wall_force_N"), l.steady_wall_force},
+            {"runout_past_toe_m", l.runout_past_toe},
+        };
+        if (timed) level["runtime_s"] = context.runtime[i];
+        levels.push_back(std::move(level));
+    }
+    nlohmann::ordered_json extrapolation;
+    if (study.extrapolated) {
+        extrapolation = {{"refinement_ratio", study.ratio}};
+        for (const Quantity& q : quantities(context.dimension)) {
+            const mpm::RichardsonEstimate& e = study.*q.estimate;
+            extrapolation[q.key] = {
+                {"monotone", e.monotone},
+                {"extrapolated", json_number(e.extrapolated)},
+                {"observed_order", json_number(e.order)},
+                {"finest_change", json_number(e.finest_change)},
+                {"gci_fine", json_number(e.gci_fine)},
+            };
+        }
+    }
+    return {
+        {"scenario_file", context.scenario},         {"dimension", context.dimension},
+        {"per_metre_of_width", u.per_metre},         {"duration_s", context.duration},
+        {"steady_window_s", context.steady_window},  {"levels", std::move(levels)},
+        {"extrapolation", std::move(extrapolation)},
+    };
+}
+
+}  // namespace rockfall::report
