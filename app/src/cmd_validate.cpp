@@ -162,14 +162,14 @@ void run_validate(const ValidateArgs& args) {
     vv.sections.push_back(std::move(calibration));
 
     vv.settings = {{"seed 001", std::to_string(seeds) + " cluster seed(s) from " +
-                                    std::to_string(args.first_seed) + ", rows " + rows +
-                                    ", " + setting_text(args.max_time, "s") +
+                                    std::to_string(args.first_seed) + ", rows " + rows + ", " +
+                                    setting_text(args.max_time, "s") +
                                     " after the gate opens, pressure cells every " +
                                     setting_text(seed001.info.sample_interval, "s")},
                    {"case files", seed001.info.source}};
     if (rows != "all")
-        vv.left_out.emplace_back("seed 001's " + std::string(rows == "physical" ? "numerical"
-                                                                                : "physical") +
+        vv.left_out.emplace_back("seed 001's " +
+                                     std::string(rows == "physical" ? "numerical" : "physical") +
                                      " rows of Table 2",
                                  args.quick ? "--quick" : "--rows " + rows);
     if (args.quick) vv.left_out.emplace_back("the heap test", "--quick");
@@ -227,11 +227,13 @@ void register_validate(CLI::App& app) {
                     "the wall within about 1.5 s; their deposit takes up to 10 s to rest)")
         ->check(CLI::Range(0.5, 30.0))
         ->capture_default_str();
-    cmd->add_option("--rows", args->rows,
-                    "Seed 001: Table 2's rows to run: all, physical (blocky cluster, painted rocks) "
-                    "or numerical (every rock of one shape) (default all; physical with --quick)")
+    cmd->add_option(
+           "--rows", args->rows,
+           "Seed 001: Table 2's rows to run: all, physical (blocky cluster, painted rocks) "
+           "or numerical (every rock of one shape) (default all; physical with --quick)")
         ->check(CLI::IsMember({"all", "physical", "numerical"}));
-    cmd->add_flag("--json", args->json, "Print one JSON document instead of the tables (no progress)");
+    cmd->add_flag("--json", args->json,
+                  "Print one JSON document instead of the tables (no progress)");
     cmd->add_flag("--quiet", args->quiet, "No progress on standard error");
     cmd->callback([args] { run_validate(*args); });
 }

@@ -31,7 +31,6 @@ constexpr double step_sizes[] = {1e-3, 5e-4};  // s: the default step and half o
 std::string dt_id(double dt) { return fmt("dt%gms", dt * 1e3); }
 std::string dt_text(double dt) { return fmt("dt %g ms", dt * 1e3); }
 
-
 report::VvTable motion_table() {
     report::VvTable table{"Free fall, sliding and rolling on a straight plane (0.2 m rock)", {}};
     for (const double dt : step_sizes) {
@@ -42,43 +41,50 @@ report::VvTable motion_table() {
         const engine::RockState& end = scenes::state_at(states, 1.0);
         const double t = end.time;
         // Symplectic Euler: the velocity is exact, the position lags by g t dt / 2.
-        table.checks.push_back(report::make_check("free_fall.drop." + dt_id(dt),
-                                     "free fall: drop in " + fmt("%.3g s", t) + ", " + dt_text(dt),
-                                     "m", 0.5 * g * t * t, "g t^2 / 2",
-                                     states.front().position.z() - end.position.z(), 0.002));
-        table.checks.push_back(report::make_check("free_fall.speed." + dt_id(dt),
-                                     "free fall: speed at " + fmt("%.3g s", t) + ", " + dt_text(dt),
-                                     "m/s", g * t, "g t", -end.velocity.z(), 1e-6));
+        table.checks.push_back(report::make_check(
+            "free_fall.drop." + dt_id(dt),
+            "free fall: drop in " + fmt("%.3g s", t) + ", " + dt_text(dt), "m", 0.5 * g * t * t,
+            "g t^2 / 2", states.front().position.z() - end.position.z(), 0.002));
+        table.checks.push_back(
+            report::make_check("free_fall.speed." + dt_id(dt),
+                               "free fall: speed at " + fmt("%.3g s", t) + ", " + dt_text(dt),
+                               "m/s", g * t, "g t", -end.velocity.z(), 1e-6));
     }
     const double angle = 30.0;
     const double sin_t = std::sin(scenes::radians(angle));
     const double cos_t = std::cos(scenes::radians(angle));
+    // A block slides at g (sin t - mu cos t); a sphere rolls at 5/7 g (sin t - mu_r cos t) from
+    // the torque balance with the resisting moment mu_r r N.
     struct Case {
         std::string id;
         std::string label;
         RockKind kind;
         engine::Material material;
-        double expected;
-        std::string source;
     };
     const Case cases[] = {
-        {"slide.mu0.3", "block sliding on 30 deg, mu 0.3", RockKind::massive, {0.3, 0.0, 0.0},
-         g * (sin_t - 0.3 * cos_t), "g (sin t - mu cos t)"},
-        {"slide.mu0.45", "block sliding on 30 deg, mu 0.45", RockKind::massive, {0.45, 0.0, 0.0},
-         g * (sin_t - 0.45 * cos_t), "g (sin t - mu cos t)"},
-        {"roll", "sphere rolling without slip on 30 deg", RockKind::sphere, {1.0, 0.0, 0.0},
-         5.0 / 7.0 * g * sin_t, "5/7 g sin t"},
-        {"roll.resistance0.05", "sphere rolling on 30 deg, rolling resistance 0.05",
-         RockKind::sphere, {1.0, 0.0, 0.05}, 5.0 / 7.0 * g * (sin_t - 0.05 * cos_t),
-         "5/7 g (sin t - mu_r cos t)"},
+        {"slide.mu0.3", "block sliding on 30 deg, mu 0.3", RockKind::massive, {0.3, 0.0, 0.0}},
+        {"slide.mu0.45", "block sliding on 30 deg, mu 0.45", RockKind::massive, {0.45, 0.0, 0.0}},
+        {"roll", "sphere rolling without slip on 30 deg", RockKind::sphere, {1.0, 0.0, 0.0}},
+        {"roll.resistance0.05",
+         "sphere rolling on 30 deg, rolling resistance 0.05",
+         RockKind::sphere,
+         {1.0, 0.0, 0.05}},
     };
     for (const Case& c : cases) {
+        const bool slides = c.kind == RockKind::massive;
+        const double expected =
+            slides ? g * (sin_t - c.material.friction * cos_t)
+                   : 5.0 / 7.0 * g * (sin_t - c.material.rolling_resistance * cos_t);
+        const std::string source = slides ? "g (sin t - mu cos t)"
+                                   : c.material.rolling_resistance > 0.0
+                                       ? "5/7 g (sin t - mu_r cos t)"
+                                       : "5/7 g sin t";
         for (const double dt : step_sizes) {
             const std::vector<engine::RockState> states =
                 scenes::trajectory(scenes::plane_scenario(angle, c.kind, c.material, dt), 0.01);
             table.checks.push_back(report::make_check(
                 c.id + "." + dt_id(dt), c.label + ": mean acceleration 0.5-2 s, " + dt_text(dt),
-                "m/s2", c.expected, c.source,
+                "m/s2", expected, source,
                 scenes::mean_acceleration(states, scenes::downslope(angle), 0.5, 2.0), 0.02));
         }
     }
@@ -128,12 +134,12 @@ report::VvTable bounce_table(report::VvSection& section) {
                 std::string(c.kind == RockKind::sphere ? "bounce.sphere" : "bounce.block") +
                 fmt(".%gdeg", c.angle_deg) + fmt(".e%g.", c.restitution) + dt_id(dt);
             const double nan = std::nan("");
-            VvCheck height = report::make_check(id + ".height", bounce_label(c) + ": rebound, " + dt_text(dt),
-                                   "m", c.restitution * c.restitution, "e^2 h",
-                                   b ? b->rebound_height : nan, 0.05);
-            VvCheck ratio = report::make_check(id + ".ratio", bounce_label(c) + ": speed ratio, " + dt_text(dt),
-                                  "", c.restitution, "e (Newton)", b ? b->velocity_ratio : nan,
-                                  0.025);
+            VvCheck height = report::make_check(
+                id + ".height", bounce_label(c) + ": rebound, " + dt_text(dt), "m",
+                c.restitution * c.restitution, "e^2 h", b ? b->rebound_height : nan, 0.05);
+            VvCheck ratio = report::make_check(
+                id + ".ratio", bounce_label(c) + ": speed ratio, " + dt_text(dt), "", c.restitution,
+                "e (Newton)", b ? b->velocity_ratio : nan, 0.025);
             if (!b) height.note = ratio.note = "no rebound within 1.5 s";
             table.checks.push_back(height);
             table.checks.push_back(ratio);
@@ -144,15 +150,9 @@ report::VvTable bounce_table(report::VvSection& section) {
             }
         }
     }
-    report::Plot plot;
-    plot.title = "Rebound height after a 1 m drop";
-    plot.x_label = "restitution e";
-    plot.y_label = "rebound height (m)";
-    plot.x_min = 0.0;
+    report::Plot plot = report::vv_plot("Rebound height after a 1 m drop", "restitution e",
+                                        "rebound height (m)", {line, spheres, blocks});
     plot.x_max = 1.0;
-    plot.y_min = 0.0;
-    plot.height = 520.0;
-    plot.series = {line, spheres, blocks};
     section.figures.push_back(
         {plot,
          "Rise of the centre after the first bounce along the plane's normal against the "
@@ -204,21 +204,21 @@ report::VvTable wall_table(report::VvSection& section) {
         return h ? (*h).*field : std::nan("");
     };
     const double e = 0.3;
-    for (const auto& [name, contact] :
-         {std::pair{"Hertz-Tsuji", engine::WallContact{}}, std::pair{"linear", linear_contact(2e8)}}) {
+    for (const auto& [name, contact] : {std::pair{"Hertz-Tsuji", engine::WallContact{}},
+                                        std::pair{"linear", linear_contact(2e8)}}) {
         const std::optional<engine::WallHit> hit = single_hit(contact, e);
         const std::string model = name == std::string("linear") ? "linear" : "hertz";
         const double vn = value(hit, &engine::WallHit::normal_speed);
-        table.checks.push_back(report::make_check("wall_impulse." + model,
-                                     std::string("impulse, ") + name + " law, e 0.3", "N s",
-                                     mass * (1.0 + e) * vn, "m (1 + e) v_n (v_n as recorded)",
-                                     value(hit, &engine::WallHit::normal_impulse), 0.02));
-        const double momentum =
-            hit ? mass * (hit->velocity_before - hit->velocity_after).x() : nan;
-        table.checks.push_back(report::make_check("wall_impulse." + model + ".momentum",
-                                     std::string("impulse against momentum change, ") + name,
-                                     "N s", momentum, "m (v_before - v_after) of the rock",
-                                     value(hit, &engine::WallHit::normal_impulse), 0.02));
+        table.checks.push_back(report::make_check(
+            "wall_impulse." + model, std::string("impulse, ") + name + " law, e 0.3", "N s",
+            mass * (1.0 + e) * vn, "m (1 + e) v_n (v_n as recorded)",
+            value(hit, &engine::WallHit::normal_impulse), 0.02));
+        const double momentum = hit ? mass * (hit->velocity_before - hit->velocity_after).x() : nan;
+        table.checks.push_back(
+            report::make_check("wall_impulse." + model + ".momentum",
+                               std::string("impulse against momentum change, ") + name, "N s",
+                               momentum, "m (v_before - v_after) of the rock",
+                               value(hit, &engine::WallHit::normal_impulse), 0.02));
     }
     const engine::WallContact hertz_contact;
     const double e_star = effective_modulus_of(hertz_contact);
@@ -230,57 +230,54 @@ report::VvTable wall_table(report::VvSection& section) {
         const double peak = value(hit, &engine::WallHit::peak_normal_force);
         if (restitution > 0.9) {
             elastic = hit;
-            table.checks.push_back(
-                report::make_check("hertz.peak.e0.95", "Hertz-Tsuji peak force, e 0.95 (nearly elastic)", "N",
-                      engine::hertz_impact(e_star, radius, mass, vn).peak_force,
-                      "Hertz's elastic impact (Johnson 1985)", peak, 0.10));
+            table.checks.push_back(report::make_check(
+                "hertz.peak.e0.95", "Hertz-Tsuji peak force, e 0.95 (nearly elastic)", "N",
+                engine::hertz_impact(e_star, radius, mass, vn).peak_force,
+                "Hertz's elastic impact (Johnson 1985)", peak, 0.10));
         }
         const double overlap_unit = std::pow(mass * vn * vn / kn, 0.4);
-        table.checks.push_back(report::make_check(
-            fmt("hertz.tsuji.e%g", restitution), fmt("Hertz-Tsuji peak force, e %g", restitution),
-            "N",
-            engine::tsuji_impact_for_restitution(restitution).peak_force * kn *
-                std::pow(overlap_unit, 1.5),
-            "nondimensional Hertz-Tsuji solution", peak, 0.05));
+        table.checks.push_back(
+            report::make_check(fmt("hertz.tsuji.e%g", restitution),
+                               fmt("Hertz-Tsuji peak force, e %g", restitution), "N",
+                               engine::tsuji_impact_for_restitution(restitution).peak_force * kn *
+                                   std::pow(overlap_unit, 1.5),
+                               "nondimensional Hertz-Tsuji solution", peak, 0.05));
     }
     {
         const std::optional<engine::WallHit> hit = single_hit(linear_contact(0.0), 0.3);
         const double vn = hit ? hit->normal_speed : speed;
-        table.checks.push_back(report::make_check("hertz.linear_equivalent",
-                                     "linear law, Hertz-equivalent stiffness: peak force, e 0.3",
-                                     "N", engine::hertz_impact(e_star, radius, mass, vn).peak_force,
-                                     "Hertz's elastic impact",
-                                     value(hit, &engine::WallHit::peak_normal_force), 0.10));
+        table.checks.push_back(report::make_check(
+            "hertz.linear_equivalent", "linear law, Hertz-equivalent stiffness: peak force, e 0.3",
+            "N", engine::hertz_impact(e_star, radius, mass, vn).peak_force,
+            "Hertz's elastic impact", value(hit, &engine::WallHit::peak_normal_force), 0.10));
     }
     const double k = 2e8;
     std::optional<engine::WallHit> damped;
     for (const auto& [restitution, steps] : {std::pair{0.5, 40}, std::pair{0.3, 80}}) {
-        const std::optional<engine::WallHit> hit = single_hit(linear_contact(k, steps), restitution);
+        const std::optional<engine::WallHit> hit =
+            single_hit(linear_contact(k, steps), restitution);
         if (restitution == 0.5) damped = hit;
         const engine::LinearImpact unit =
             engine::linear_impact(engine::clamped_damping_ratio(restitution));
         const double vn = hit ? hit->normal_speed : speed;
         const std::string id = fmt("spring_dashpot.e%g", restitution);
-        const std::string label = fmt("spring-dashpot k 2e8 N/m, e %g", restitution) +
-                                  ", " + std::to_string(steps) + " steps per contact";
-        table.checks.push_back(report::make_check(id + ".peak", label + ": peak force", "N",
-                                     unit.peak_force * vn * std::sqrt(mass * k),
-                                     "closed form (Schwager and Poeschel 2007)",
-                                     value(hit, &engine::WallHit::peak_normal_force), 0.05));
-        table.checks.push_back(report::make_check(id + ".duration", label + ": duration", "s",
-                                     unit.duration * std::sqrt(mass / k),
-                                     "closed form (Schwager and Poeschel 2007)",
-                                     hit ? hit->end_time - hit->start_time : nan, 0.05));
+        const std::string label = fmt("spring-dashpot k 2e8 N/m, e %g", restitution) + ", " +
+                                  std::to_string(steps) + " steps per contact";
+        table.checks.push_back(report::make_check(
+            id + ".peak", label + ": peak force", "N", unit.peak_force * vn * std::sqrt(mass * k),
+            "closed form (Schwager and Poeschel 2007)",
+            value(hit, &engine::WallHit::peak_normal_force), 0.05));
+        table.checks.push_back(report::make_check(
+            id + ".duration", label + ": duration", "s", unit.duration * std::sqrt(mass / k),
+            "closed form (Schwager and Poeschel 2007)", hit ? hit->end_time - hit->start_time : nan,
+            0.05));
     }
     if (elastic && damped) {
-        report::Plot plot;
-        plot.title = "Wall force of one normal impact at 8 m/s";
-        plot.x_label = "time from first touch (ms)";
-        plot.y_label = "normal force (kN)";
-        plot.y_min = 0.0;
-        plot.height = 520.0;
-        plot.series = {force_history("Hertz-Tsuji, e 0.95", "#1f77b4", *elastic),
-                       force_history("linear k 2e8 N/m, e 0.5", "#d62728", *damped)};
+        report::Plot plot =
+            report::vv_plot("Wall force of one normal impact at 8 m/s",
+                            "time from first touch (ms)", "normal force (kN)",
+                            {force_history("Hertz-Tsuji, e 0.95", "#1f77b4", *elastic),
+                             force_history("linear k 2e8 N/m, e 0.5", "#d62728", *damped)});
         const double t_end = 1e3 * std::max(elastic->end_time - elastic->start_time,
                                             damped->end_time - damped->start_time);
         const double hertz_peak =
@@ -301,24 +298,22 @@ report::VvTable wall_table(report::VvSection& section) {
 }  // namespace
 
 report::VvSection engine_section(const VvOptions&) {
-    report::VvSection section;
-    section.id = "engine";
-    section.title = "Rigid-body engine: analytic motion and wall impacts";
-    section.notes = {
-        "One rock on one long straight plane (engine/verification_scenes.hpp, the set-ups of "
-        "tests/engine/test_motion.cpp), gravity 9.81 m/s2, at the default step of 1 ms and at "
-        "half of it. Tolerances: free fall 0.2 % (symplectic Euler lags by g t dt / 2, 0.1 % at "
-        "1 ms and 1 s); the speed is exact; accelerations 2 % (the landing transient within "
-        "the 0.5-2 s window); rebound heights 5 % and speed ratios 2.5 % (the contact's "
-        "position error of a step at 4.4 m/s).",
-        "The wall impacts (tests/engine/test_wall_hits.cpp) run the wall contact's own fine "
-        "steps. Impulse within 2 %; peak forces within 5 % of the Hertz-Tsuji and "
-        "spring-dashpot solutions: Bullet evaluates the force at the start of each fine step, "
-        "and over all phases of the first touch a one-degree-of-freedom replica of that scheme "
-        "at 40 steps per contact errs by up to +3.3 % (Hertz-Tsuji) and +6.1 % (linear at e "
-        "0.3, hence its 80 steps). Hertz's elastic solution is the reference only for the "
-        "nearly elastic hit and the Hertz-equivalent linear law, within 10 % (Tsuji damping "
-        "lowers the peak by 3 % at e 0.95)."};
+    report::VvSection section = report::vv_section(
+        "engine", "Rigid-body engine: analytic motion and wall impacts",
+        {"One rock on one long straight plane (engine/verification_scenes.hpp, the set-ups of "
+         "tests/engine/test_motion.cpp), gravity 9.81 m/s2, at the default step of 1 ms and at "
+         "half of it. Tolerances: free fall 0.2 % (symplectic Euler lags by g t dt / 2, 0.1 % at "
+         "1 ms and 1 s); the speed is exact; accelerations 2 % (the landing transient within "
+         "the 0.5-2 s window); rebound heights 5 % and speed ratios 2.5 % (the contact's "
+         "position error of a step at 4.4 m/s).",
+         "The wall impacts (tests/engine/test_wall_hits.cpp) run the wall contact's own fine "
+         "steps. Impulse within 2 %; peak forces within 5 % of the Hertz-Tsuji and "
+         "spring-dashpot solutions: Bullet evaluates the force at the start of each fine step, "
+         "and over all phases of the first touch a one-degree-of-freedom replica of that scheme "
+         "at 40 steps per contact errs by up to +3.3 % (Hertz-Tsuji) and +6.1 % (linear at e "
+         "0.3, hence its 80 steps). Hertz's elastic solution is the reference only for the "
+         "nearly elastic hit and the Hertz-equivalent linear law, within 10 % (Tsuji damping "
+         "lowers the peak by 3 % at e 0.95)."});
     section.tables.push_back(motion_table());
     section.tables.push_back(bounce_table(section));
     section.tables.push_back(wall_table(section));

@@ -22,10 +22,10 @@ using report::make_check;
 report::VvTable bar_table(report::VvSection& section) {
     const verification::ElasticBar bar = verification::elastic_bar(0.05);
     const std::string source = "omega = pi c / 2L, c = sqrt(E / rho) (Sulsky et al. 1994)";
-    report::VvTable table{"Elastic bar, first axial mode (L 1 m, E 10 MPa, 1000 kg/m3, cell 0.05 m)",
-                          {}};
-    table.checks.push_back(make_check("mpm.bar.period", "period", "s", bar.expected_period, source,
-                                      bar.period, 0.03));
+    report::VvTable table{
+        "Elastic bar, first axial mode (L 1 m, E 10 MPa, 1000 kg/m3, cell 0.05 m)", {}};
+    table.checks.push_back(
+        make_check("mpm.bar.period", "period", "s", bar.expected_period, source, bar.period, 0.03));
     table.checks.push_back(make_check("mpm.bar.tip", "tip amplitude, first period", "m",
                                       bar.expected_tip_amplitude, "v0 / omega", bar.tip_amplitude,
                                       0.03));
@@ -42,13 +42,8 @@ report::VvTable bar_table(report::VvSection& section) {
         analytic.x.push_back(t);
         analytic.y.push_back(bar.expected_velocity_amplitude * std::cos(omega * t));
     }
-    report::Plot plot;
-    plot.title = "Elastic bar: mean velocity";
-    plot.x_label = "time (s)";
-    plot.y_label = "mean velocity (m/s)";
-    plot.height = 480.0;
-    plot.series = {simulated, analytic};
-    section.figures.push_back({plot,
+    section.figures.push_back({report::vv_plot("Elastic bar: mean velocity", "time (s)",
+                                               "mean velocity (m/s)", {simulated, analytic}, false),
                                "The bar's mean velocity over three periods against the first "
                                "mode's analytic one: the period and the slow decay."});
     return table;
@@ -63,7 +58,8 @@ report::VvTable column_table(report::VvSection& section) {
         k0.x.push_back(nu);
         k0.y.push_back(nu / (1.0 - nu));
     }
-    report::Series simulated = report::point_series("MPM, mean of both walls", "#1f77b4", report::Marker::circle);
+    report::Series simulated =
+        report::point_series("MPM, mean of both walls", "#1f77b4", report::Marker::circle);
     for (const double nu : {0.0, 0.1, 0.2, 0.3, 0.4, 0.45}) {
         const verification::ColumnForces f = verification::column_at_rest(nu, 0.1, 1.0, 0.4);
         const std::string id = fmt("mpm.k0.nu%g", nu);
@@ -87,14 +83,8 @@ report::VvTable column_table(report::VvSection& section) {
         simulated.x.push_back(nu);
         simulated.y.push_back(0.5 * (f.left + f.right) / unit);
     }
-    report::Plot plot;
-    plot.title = "Column at rest: lateral thrust";
-    plot.x_label = "Poisson ratio nu";
-    plot.y_label = "thrust / (gamma H^2 / 2)";
-    plot.x_min = 0.0;
-    plot.y_min = 0.0;
-    plot.height = 480.0;
-    plot.series = {k0, simulated};
+    const report::Plot plot = report::vv_plot("Column at rest: lateral thrust", "Poisson ratio nu",
+                                              "thrust / (gamma H^2 / 2)", {k0, simulated});
     section.figures.push_back({plot,
                                "Thrust on the walls of the column at rest against the at-rest "
                                "coefficient of uniaxial strain."});
@@ -130,14 +120,9 @@ report::VvTable collapse_table(report::VvSection& section) {
         simulated.x.push_back(a);
         simulated.y.push_back(c.runout);
     }
-    report::Plot plot;
-    plot.title = "Granular column collapse: runout";
-    plot.x_label = "aspect ratio a = H0 / L0";
-    plot.y_label = "runout (L - L0) / L0";
-    plot.x_min = 0.0;
-    plot.y_min = 0.0;
-    plot.height = 480.0;
-    plot.series = {lube, lajeunesse, simulated};
+    const report::Plot plot =
+        report::vv_plot("Granular column collapse: runout", "aspect ratio a = H0 / L0",
+                        "runout (L - L0) / L0", {lube, lajeunesse, simulated});
     section.figures.push_back({plot,
                                "Runout of the planar column collapse against the two "
                                "experimental fits as Lagree et al. 2011 tabulate them."});
@@ -149,38 +134,37 @@ report::VvTable block_table() {
     const double g = 9.81;
     const double theta = 43.0 * std::numbers::pi / 180.0;
     const verification::BlockSlide rough = verification::sliding_block(43.0, 30.0, 0.6);
-    table.checks.push_back(make_check(
-        "mpm.block.43deg", "43 deg, basal friction 30 deg: fitted acceleration", "m/s2",
-        g * (std::sin(theta) - std::tan(std::numbers::pi / 6.0) * std::cos(theta)),
-        "g (sin t - tan phi_b cos t)", rough.fitted_acceleration, 0.03));
+    table.checks.push_back(
+        make_check("mpm.block.43deg", "43 deg, basal friction 30 deg: fitted acceleration", "m/s2",
+                   g * (std::sin(theta) - std::tan(std::numbers::pi / 6.0) * std::cos(theta)),
+                   "g (sin t - tan phi_b cos t)", rough.fitted_acceleration, 0.03));
     const verification::BlockSlide smooth = verification::sliding_block(29.0, 0.0, 0.5);
-    table.checks.push_back(make_check("mpm.block.29deg", "29 deg, frictionless: fitted acceleration",
-                                      "m/s2", g * std::sin(29.0 * std::numbers::pi / 180.0),
-                                      "g sin t", smooth.fitted_acceleration, 0.03));
+    table.checks.push_back(make_check("mpm.block.29deg",
+                                      "29 deg, frictionless: fitted acceleration", "m/s2",
+                                      g * std::sin(29.0 * std::numbers::pi / 180.0), "g sin t",
+                                      smooth.fitted_acceleration, 0.03));
     const verification::BlockSlide held = verification::sliding_block(25.0, 30.0, 0.5, 20.0);
-    table.checks.push_back(make_check("mpm.block.25deg", "25 deg, basal friction 30 deg: slip in 0.5 s",
-                                      "m", 0.0, "at rest (tan 30 > tan 25)", held.displacement,
-                                      2e-3, false));
+    table.checks.push_back(make_check("mpm.block.25deg",
+                                      "25 deg, basal friction 30 deg: slip in 0.5 s", "m", 0.0,
+                                      "at rest (tan 30 > tan 25)", held.displacement, 2e-3, false));
     return table;
 }
 
 }  // namespace
 
 report::VvSection mpm_section(const VvOptions&) {
-    report::VvSection section;
-    section.id = "mpm";
-    section.title = "MPM soil solver: bar, K0, column collapse, sliding block";
-    section.notes = {
-        "2D plane strain, one thread (results do not depend on the thread count). Tolerances "
-        "as the tests set them (tests/mpm/): the bar's period and amplitude 3 % (the grid's "
-        "dispersion at 20 cells), its late velocity 5 % (numerical damping); forces on the base "
-        "1 % and the K0 thrust 5 %; the sliding block 3 % (the fit's start-up transient), at "
-        "rest within 2 mm (the release transient is damped).",
-        "The column collapse's runout must lie within 20 % of the nearer of two experimental "
-        "fits (Lube et al. 2005, Phys. Rev. E 72; Lajeunesse et al. 2005, Phys. Fluids 17), "
-        "which differ by up to 50 % with the material. It is not converged in the cell size: "
-        "halving the cell lengthens it by 20-30 % (tests/mpm/test_column_collapse.cpp), so the "
-        "check tests this resolution as much as the model."};
+    report::VvSection section = report::vv_section(
+        "mpm", "MPM soil solver: bar, K0, column collapse, sliding block",
+        {"2D plane strain, one thread (results do not depend on the thread count). Tolerances "
+         "as the tests set them (tests/mpm/): the bar's period and amplitude 3 % (the grid's "
+         "dispersion at 20 cells), its late velocity 5 % (numerical damping); forces on the base "
+         "1 % and the K0 thrust 5 %; the sliding block 3 % (the fit's start-up transient), at "
+         "rest within 2 mm (the release transient is damped).",
+         "The column collapse's runout must lie within 20 % of the nearer of two experimental "
+         "fits (Lube et al. 2005, Phys. Rev. E 72; Lajeunesse et al. 2005, Phys. Fluids 17), "
+         "which differ by up to 50 % with the material. It is not converged in the cell size: "
+         "halving the cell lengthens it by 20-30 % (tests/mpm/test_column_collapse.cpp), so the "
+         "check tests this resolution as much as the model."});
     section.tables.push_back(bar_table(section));
     section.tables.push_back(column_table(section));
     section.tables.push_back(collapse_table(section));

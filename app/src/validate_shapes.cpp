@@ -22,7 +22,6 @@ using report::fmt;
 using report::VvCheck;
 using shapes::PlatonicKind;
 
-
 // Volume, area and moment about any axis through the centre for unit edge a: V = v a^3,
 // A = s a^2, I = k V a^2 per unit density (Coxeter, Regular Polytopes, table I; the moments as
 // tabulated by Satterly 1957); Wadell sphericity to three decimals (Wadell 1935).
@@ -57,21 +56,23 @@ report::VvSection shapes_section(const VvOptions&) {
         const shapes::ShapeMeasures m = shapes::shape_measures(shapes::platonic_solid(s.kind, a));
         const double volume = s.volume * a * a * a;
         const std::string closed = "closed form (Coxeter, table I)";
-        mass.checks.push_back(report::make_check("mass." + name + ".volume", name + ": volume", "m3", volume,
-                                    closed, m.properties.volume, 1e-9, true));
-        mass.checks.push_back(report::make_check("mass." + name + ".area", name + ": surface area", "m2",
-                                    s.area * a * a, closed, m.properties.surface_area, 1e-9, true));
+        mass.checks.push_back(report::make_check("mass." + name + ".volume", name + ": volume",
+                                                 "m3", volume, closed, m.properties.volume, 1e-9,
+                                                 true));
+        mass.checks.push_back(report::make_check("mass." + name + ".area", name + ": surface area",
+                                                 "m2", s.area * a * a, closed,
+                                                 m.properties.surface_area, 1e-9, true));
         // The largest principal moment: all three are equal for a Platonic solid.
-        mass.checks.push_back(report::make_check("mass." + name + ".moment", name + ": largest principal moment",
-                                    "m5", s.moment * volume * a * a,
-                                    "closed form (Satterly 1957)",
-                                    m.properties.principal_moments[2], 1e-9, true));
-        mass.checks.push_back(report::make_check("mass." + name + ".centroid", name + ": centroid offset", "m",
-                                    0.0, "centred on the origin", m.properties.centroid.norm(),
-                                    1e-12, false));
+        mass.checks.push_back(
+            report::make_check("mass." + name + ".moment", name + ": largest principal moment",
+                               "m5", s.moment * volume * a * a, "closed form (Satterly 1957)",
+                               m.properties.principal_moments[2], 1e-9, true));
+        mass.checks.push_back(report::make_check(
+            "mass." + name + ".centroid", name + ": centroid offset", "m", 0.0,
+            "centred on the origin", m.properties.centroid.norm(), 1e-12, false));
         sphericity.checks.push_back(report::make_check("sphericity." + name, name, "", s.sphericity,
-                                          "Wadell 1935, three decimals", m.wadell_sphericity,
-                                          0.001, false));
+                                                       "Wadell 1935, three decimals",
+                                                       m.wadell_sphericity, 0.001, false));
     }
     report::VvTable generated{
         "Generated rocks of a target sphericity (rock_with_sphericity, 0.25 m, seed 0)", {}};
@@ -79,21 +80,18 @@ report::VvSection shapes_section(const VvOptions&) {
         const auto rock = shapes::rock_with_sphericity(target, 0);
         const shapes::ShapeMeasures m =
             shapes::shape_measures(shapes::make_rock({"rock", rock.hull}, 0.25));
-        generated.checks.push_back(report::make_check(fmt("sphericity.generated.%g", target),
-                                         fmt("target %g", target), "", target,
-                                         "the requested target", m.wadell_sphericity, 0.02,
-                                         false));
+        generated.checks.push_back(
+            report::make_check(fmt("sphericity.generated.%g", target), fmt("target %g", target), "",
+                               target, "the requested target", m.wadell_sphericity, 0.02, false));
     }
-    report::VvSection section;
-    section.id = "shapes";
-    section.title = "Mass properties and sphericities";
-    section.notes = {
-        "Hulls by Qhull and their exact polyhedral mass properties (shapes/mass_properties.hpp) "
-        "against the closed forms; relative tolerance 1e-9 (round-off: the exact algorithm "
-        "agrees to about 1e-14). Sphericities against Wadell's three-decimal values within "
-        "0.001 (the rounding of the published values).",
-        "Generated rocks meet their target within 0.02, the tolerance issue 5 set for the "
-        "shape generator (the bisection itself stops within 1e-4)."};
+    report::VvSection section = report::vv_section(
+        "shapes", "Mass properties and sphericities",
+        {"Hulls by Qhull and their exact polyhedral mass properties (shapes/mass_properties.hpp) "
+         "against the closed forms; relative tolerance 1e-9 (round-off: the exact algorithm "
+         "agrees to about 1e-14). Sphericities against Wadell's three-decimal values within "
+         "0.001 (the rounding of the published values).",
+         "Generated rocks meet their target within 0.02, the tolerance issue 5 set for the "
+         "shape generator (the bisection itself stops within 1e-4)."});
     section.tables = {mass, sphericity, generated};
     return section;
 }
