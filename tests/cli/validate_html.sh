@@ -18,11 +18,11 @@ xmllint --noout quick.html || fail "quick.html is not well-formed"
 for id in summary engine shapes mpm seed000 seed001 calibration; do
     grep -q "<section id=\"$id\">" quick.html || fail "no section $id"
 done
-for check in free_fall.drop.dt1ms slide.mu0.3.dt0.5ms roll.dt1ms bounce.sphere.0deg.e0.5.dt1ms \
+for check in free_fall.drop.dt1ms slide.mu0.3.dt0.5ms roll.dt1ms bounce.sphere.0deg.e0.5.dt1ms.height \
     wall_impulse.hertz hertz.peak.e0.95 spring_dashpot.e0.5.peak mass.cube.volume \
     sphericity.tetrahedron mpm.bar.period mpm.k0.nu0.3.left mpm.collapse.a2 mpm.block.43deg \
     seed000.lambda seed000.beta.massive seed001.peak_force_red_c2_60_deg \
-    seed001.speed_at_1_4m_yellow_c1_30_deg calibration.drop.cube; do
+    seed001.speed_at_1_4_m_yellow_c1_30_deg calibration.drop.cube; do
     grep -Eq "<tr id=\"check-$check\">.*>(PASS|MISS)</td>" quick.html || fail "no row for check $check"
 done
 [ "$(grep -c '<figure>' quick.html)" -ge 8 ] || fail "expected at least 8 figures"
