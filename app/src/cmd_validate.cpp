@@ -207,7 +207,7 @@ void register_validate(CLI::App& app) {
                     "PREFIX/share/rockfall/samples of an installed program, else the source "
                     "tree's samples/");
     cmd->add_flag("--quick", args->quick,
-                  "The CI subset: seed 001's physical rows over one seed, no heap test (about 3 "
+                  "The CI subset: seed 001's physical rows over one seed, no heap test (1 to 2 "
                   "minutes on 2 cores)");
     cmd->add_option("--html", args->html,
                     "Also write the report as one self-contained HTML file (replaced whole)");
