@@ -16,7 +16,6 @@ using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using namespace rockfall;
 using engine::RockState;
-using engine::Vec3;
 
 namespace {
 
@@ -26,28 +25,8 @@ using engine::test::plane_scenario;
 using engine::test::radians;
 using engine::test::trajectory;
 
-// The sampled state closest to time t.
-const RockState& at_time(const std::vector<RockState>& states, double t) {
-    const RockState* best = &states.front();
-    for (const RockState& s : states) {
-        if (std::abs(s.time - t) < std::abs(best->time - t)) {
-            best = &s;
-        }
-    }
-    return *best;
-}
-
-// Mean acceleration along `direction` between t0 and t1, m/s2.
-double acceleration(const std::vector<RockState>& states, const Vec3& direction, double t0,
-                    double t1) {
-    const RockState& a = at_time(states, t0);
-    const RockState& b = at_time(states, t1);
-    return (b.velocity - a.velocity).dot(direction) / (b.time - a.time);
-}
-
-Vec3 upward_normal(double angle_deg) {
-    return {std::sin(radians(angle_deg)), 0.0, std::cos(radians(angle_deg))};
-}
+using engine::scenes::mean_acceleration;
+using engine::scenes::state_at;
 
 }  // namespace
 
@@ -80,9 +59,9 @@ TEST_CASE("a block slides down an incline with a = g (sin t - mu cos t)", "[veri
     const std::vector<RockState> states = trajectory(scenario, 0.01);
     const double expected = kGravity * (std::sin(radians(angle)) - mu * std::cos(radians(angle)));
     INFO("dt = " << dt << " s, mu = " << mu);
-    CHECK_THAT(acceleration(states, downslope(angle), 0.5, 2.0), WithinRel(expected, 0.02));
+    CHECK_THAT(mean_acceleration(states, downslope(angle), 0.5, 2.0), WithinRel(expected, 0.02));
     // Sliding, not tumbling: the spin stays far below that of rolling at this speed.
-    const RockState& end = at_time(states, 2.0);
+    const RockState& end = state_at(states, 2.0);
     CHECK(end.angular_velocity.norm() * 0.1 < 0.05 * end.velocity.norm());
 }
 
@@ -95,8 +74,8 @@ TEST_CASE("a sphere rolls without slip with a = 5/7 g sin t", "[verification]") 
     const std::vector<RockState> states = trajectory(scenario, 0.01);
     const double expected = 5.0 / 7.0 * kGravity * std::sin(radians(angle));
     INFO("dt = " << dt << " s");
-    CHECK_THAT(acceleration(states, downslope(angle), 0.5, 2.0), WithinRel(expected, 0.02));
-    const RockState& end = at_time(states, 2.0);
+    CHECK_THAT(mean_acceleration(states, downslope(angle), 0.5, 2.0), WithinRel(expected, 0.02));
+    const RockState& end = state_at(states, 2.0);
     CHECK_THAT(end.angular_velocity.norm() * radius, WithinRel(end.velocity.norm(), 0.01));
 }
 
@@ -112,41 +91,16 @@ TEST_CASE("rolling resistance slows a rolling sphere to a = 5/7 g (sin t - mu_r 
     const double expected =
         5.0 / 7.0 * kGravity * (std::sin(radians(angle)) - rolling * std::cos(radians(angle)));
     INFO("dt = " << dt << " s");
-    CHECK_THAT(acceleration(states, downslope(angle), 0.5, 2.0), WithinRel(expected, 0.02));
+    CHECK_THAT(mean_acceleration(states, downslope(angle), 0.5, 2.0), WithinRel(expected, 0.02));
 }
 
 namespace {
 
-// First bounce of a rock dropped from `height` (gap above the surface, m) onto a plane at
-// `angle_deg`: the rebound height along the normal and the ratio of normal speeds.
-struct Bounce {
-    double rebound_height = 0.0;
-    double velocity_ratio = 0.0;
-};
-
-Bounce first_bounce(double angle_deg, shapes::RockKind kind, double restitution, double dt,
-                    double height) {
-    engine::Scenario scenario = plane_scenario(angle_deg, kind, {0.5, restitution, 0.0}, dt);
-    scenario.rocks.front().release.height = height;
-    scenario.numerics.max_time = 1.5;
-    const std::vector<RockState> states = trajectory(scenario, 1e-6);
-    const Vec3 n = upward_normal(angle_deg);
-    // The release puts the lowest point `height` above the surface: contact is at this
-    // normal coordinate of the centre.
-    const double touching = states.front().position.dot(n) - height;
-    std::size_t k = 1;
-    while (k < states.size() &&
-           !(states[k - 1].velocity.dot(n) < 0.0 && states[k].velocity.dot(n) > 0.0)) {
-        ++k;
-    }
-    REQUIRE(k < states.size());
-    Bounce bounce;
-    bounce.velocity_ratio = states[k].velocity.dot(n) / -states[k - 1].velocity.dot(n);
-    double apex = states[k].position.dot(n);
-    for (std::size_t j = k; j < states.size() && states[j].velocity.dot(n) >= 0.0; ++j) {
-        apex = std::max(apex, states[j].position.dot(n));
-    }
-    bounce.rebound_height = apex - touching;
+engine::scenes::Bounce first_bounce(double angle_deg, shapes::RockKind kind, double restitution,
+                                    double dt, double height) {
+    engine::scenes::Bounce bounce;
+    REQUIRE_NOTHROW(bounce =
+                        engine::scenes::first_bounce(angle_deg, kind, restitution, dt, height));
     return bounce;
 }
 
@@ -156,7 +110,7 @@ TEST_CASE("a sphere dropped on the flat rebounds to e^2 h", "[verification]") {
     const double dt = GENERATE(1e-3, 5e-4);
     const double e = GENERATE(0.3, 0.5, 0.8);
     const double h = 1.0;
-    const Bounce bounce = first_bounce(0.0, shapes::RockKind::sphere, e, dt, h);
+    const engine::scenes::Bounce bounce = first_bounce(0.0, shapes::RockKind::sphere, e, dt, h);
     INFO("dt = " << dt << " s, e = " << e);
     CHECK_THAT(bounce.rebound_height, WithinRel(e * e * h, 0.05));
     CHECK_THAT(std::sqrt(bounce.rebound_height / h), WithinRel(e, 0.025));
@@ -170,7 +124,7 @@ TEST_CASE("a sphere dropped on an incline rebounds to e^2 h along the normal", "
     const double h = 1.0;
     // Falling vertically onto the incline it meets it at sqrt(2 g h / cos t); the normal
     // component then rises against g cos t to e^2 h.
-    const Bounce bounce = first_bounce(angle, shapes::RockKind::sphere, e, dt, h);
+    const engine::scenes::Bounce bounce = first_bounce(angle, shapes::RockKind::sphere, e, dt, h);
     INFO("dt = " << dt << " s, e = " << e << ", angle = " << angle << " deg");
     CHECK_THAT(bounce.rebound_height, WithinRel(e * e * h, 0.05));
     CHECK_THAT(bounce.velocity_ratio, WithinRel(e, 0.025));
@@ -180,7 +134,7 @@ TEST_CASE("a block landing flat on a face rebounds to e^2 h", "[verification]") 
     const double dt = GENERATE(1e-3, 5e-4);
     const double e = GENERATE(0.3, 0.8);
     const double h = 1.0;
-    const Bounce bounce = first_bounce(0.0, shapes::RockKind::massive, e, dt, h);
+    const engine::scenes::Bounce bounce = first_bounce(0.0, shapes::RockKind::massive, e, dt, h);
     INFO("dt = " << dt << " s, e = " << e);
     CHECK_THAT(bounce.rebound_height, WithinRel(e * e * h, 0.05));
     CHECK_THAT(bounce.velocity_ratio, WithinRel(e, 0.025));

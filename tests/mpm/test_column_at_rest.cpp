@@ -9,77 +9,19 @@
 // between node planes they act up to a cell behind their surface (the default
 // SolverSettings::boundary_reach = 0) and the thrust falls to 45 % of K0 gamma H^2 / 2 at
 // h = 0.13 m; boundary_reach = 0.5 (the nearest node layer, within h/2) gives 89 %.
-#include "helpers.hpp"
-
-#include "mpm/setup.hpp"
-#include "mpm/solver.hpp"
+// The set-up is mpm::verification::column_at_rest.
+#include "mpm/verification.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <vector>
 
 using namespace rockfall::mpm;
-using namespace rockfall::mpm::test;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
-namespace {
-
-struct ColumnForces {
-    double weight;
-    double thrust;  // K0 gamma H^2 / 2
-    double base;
-    double left;
-    double right;
-};
-
-// Column `width` x 2 m, walls at x = 0 and x = width, base at z = 0; the grid's first node
-// `offset` m below and left of the column's corner (a multiple of h puts nodes on the walls).
-ColumnForces column_at_rest(double nu, double cell, double width, double offset,
-                            double reach = 0.0) {
-    const double height = 2.0;
-    const double density = 2000.0;
-    const double g = 9.81;
-    Particles<2> column;
-    add_box_particles<2>(column, axis_box(Vec3(0.0, -0.5, 0.0), Vec3(width, 0.5, height)),
-                         cell / 2.0, density);
-    SolverSettings s;
-    s.threads = 1;
-    s.cell_size = cell;
-    s.boundary_reach = reach;
-    s.domain_min = Vec3(-offset, 0.0, -offset);
-    s.domain_max = Vec3(width + 0.5, 0.0, height + 0.5);
-    s.damping = 60.0;
-    std::vector<StaticBoundary> box{
-        solid(axis_box(Vec3(-1.0, -1.0, -1.0), Vec3(width + 1.0, 1.0, 0.0)),
-              BoundaryKind::frictional, 0.0, 0),
-        solid(axis_box(Vec3(-1.0, -1.0, -1.0), Vec3(0.0, 1.0, 3.0)), BoundaryKind::frictional, 0.0,
-              1),
-        solid(axis_box(Vec3(width, -1.0, -1.0), Vec3(width + 1.0, 1.0, 3.0)),
-              BoundaryKind::frictional, 0.0, 2)};
-    Solver<2> solver(s, LinearElastic{1.0e7, nu}, std::move(column), std::move(box));
-
-    const double duration = 1.0;
-    const double window = 0.2;
-    std::array<Vec3, kBoundaryGroups> impulse = zero_impulses();
-    double averaged_time = 0.0;
-    while (solver.time() < duration) {
-        const StepReport& r = solver.step(solver.stable_time_step());
-        if (solver.time() > duration - window) {
-            for (int i = 0; i < kBoundaryGroups; ++i) {
-                impulse[i] += r.impulse[i];
-            }
-            averaged_time += r.dt;
-        }
-    }
-    const double k0 = nu / (1.0 - nu);
-    return {density * g * width * height, k0 * density * g * height * height / 2.0,
-            -impulse[0].z() / averaged_time, -impulse[1].x() / averaged_time,
-            impulse[2].x() / averaged_time};
-}
-
-}  // namespace
+using verification::column_at_rest;
+using verification::ColumnForces;
 
 TEST_CASE("Soil column at rest: base force and K0 thrust for every Poisson ratio",
           "[mpm][verification]") {

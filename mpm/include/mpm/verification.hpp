@@ -1,0 +1,113 @@
+#pragma once
+/// The MPM solver's verification cases with analytic or experimental answers, shared by the
+/// tests (tests/mpm/) and `rockfall validate`'s report: an elastic bar's first axial mode, a
+/// soil column at rest (K0), a granular column collapse and a block sliding on an incline, all
+/// 2D plane strain, one thread (results do not depend on the thread count). SI units.
+
+#include "mpm/boundary.hpp"
+#include "mpm/math.hpp"
+#include "shapes/slope.hpp"
+
+#include <vector>
+
+namespace rockfall::mpm::verification {
+
+/// Axis-aligned box between two corners (scene frame), m.
+shapes::OrientedBox axis_box(const Vec3& lo, const Vec3& hi);
+
+/// Box whose local x axis points down an incline of `angle_deg` (rotation about scene y), with
+/// the given centre and half extents along (downslope, across, normal), m.
+shapes::OrientedBox inclined_box(double angle_deg, const Vec3& center, const Vec3& half);
+
+/// A static boundary of `box` with friction coefficient `mu` in boundary group `group`.
+StaticBoundary solid(const shapes::OrientedBox& box, BoundaryKind kind, double mu, int group);
+
+/// The bar's first axial mode: fixed at x = 0, free at x = L = 1 m, E = 10 MPa, 1000 kg/m3,
+/// nu = 0, started with v(x) = v0 sin(pi x / 2L), v0 = 0.1 m/s, run for three periods
+/// (analytic: omega = pi c / 2L, c = sqrt(E / rho); Sulsky et al. 1994).
+struct ElasticBar {
+    /// Cell size, m.
+    double cell_size = 0.0;
+    /// Period from the zero crossings of the mean velocity, and the analytic one, s.
+    double period = 0.0;
+    double expected_period = 0.0;
+    /// Largest tip displacement in the first period and the analytic one, m.
+    double tip_amplitude = 0.0;
+    double expected_tip_amplitude = 0.0;
+    /// Largest mean velocity in the third period and the analytic 2 v0 / pi, m/s.
+    double late_velocity_amplitude = 0.0;
+    double expected_velocity_amplitude = 0.0;
+    /// Mean velocity of the bar against time, every step (s, m/s).
+    std::vector<double> time;
+    std::vector<double> mean_velocity;
+};
+
+/// Runs the elastic bar at cell size `cell_size` (m, <= 0.1). Throws std::runtime_error when
+/// the mean velocity crosses zero fewer than 5 times.
+ElasticBar elastic_bar(double cell_size = 0.05);
+
+/// An elastic column (E = 10 MPa, 2000 kg/m3, 2 m high) at rest in a box with frictionless
+/// walls, settled under gravity with damping; forces averaged over the last 0.2 s of 1 s.
+struct ColumnForces {
+    /// Weight of the column and the at-rest thrust K0 gamma H^2 / 2, K0 = nu / (1 - nu), N/m.
+    double weight = 0.0;
+    double thrust = 0.0;
+    /// Force on the base and on the left and right walls, N/m.
+    double base = 0.0;
+    double left = 0.0;
+    double right = 0.0;
+};
+
+/// The column `width` (m) wide with walls at x = 0 and x = width, base at z = 0, Poisson ratio
+/// `nu`, cell `cell` (m); the grid's first node `offset` m below and left of the column's
+/// corner (a multiple of the cell puts nodes on the walls); SolverSettings::boundary_reach
+/// `reach`.
+ColumnForces column_at_rest(double nu, double cell, double width, double offset,
+                            double reach = 0.0);
+
+/// Runout (L_inf - L0) / L0 of a granular column of aspect a = H0 / L0 by the fits of Lube et
+/// al. 2005 (1.2 a below 1.8, 1.9 a^(2/3) above 2.8, the larger between) and of Lajeunesse et
+/// al. 2005 (1.8 a below 3, 2.3 a^(2/3) from 3), as Lagree et al. 2011 tabulate them.
+double lube_runout(double aspect);
+double lajeunesse_runout(double aspect);
+
+/// A planar column collapse: L0 = 0.2 m against a back wall, H0 = a L0, Drucker-Prager
+/// (phi 30 deg plane-strain match, no cohesion, E 1 MPa, nu 0.3, 1600 kg/m3), geostatic K0
+/// start, basal and wall friction 30 deg, 4 particles per cell, run until at rest (or 20
+/// sqrt(H0 / g)).
+struct ColumnCollapse {
+    /// Aspect ratio a and cells per L0.
+    double aspect = 0.0;
+    int cells_per_length = 0;
+    /// (front + h/4 - L0) / L0, the front being the farthest particle centre.
+    double runout = 0.0;
+    /// Simulated time, s, and steps in which particles were pulled back into the domain.
+    double time = 0.0;
+    int clamped_steps = 0;
+    /// Final particle positions (x, z), m.
+    std::vector<Vec<2>> deposit;
+};
+
+/// Runs the collapse of aspect `aspect` (> 0) at `cells_per_length` cells per L0 (>= 4).
+ColumnCollapse column_collapse(double aspect, int cells_per_length = 16);
+
+/// A 0.4 m x 0.2 m elastic block (E = 5 MPa, nu 0.3, 2000 kg/m3, cell 0.05 m) released with zero
+/// stress on an incline whose boundary is an oriented box not aligned with the grid.
+struct BlockSlide {
+    /// Acceleration along the incline from a least-squares fit s = s0 + v0 t + a t^2 / 2 of the
+    /// centre of mass, m/s2, and the final displacement along it, m.
+    double fitted_acceleration = 0.0;
+    double displacement = 0.0;
+    /// The analytic g (sin theta - tan phi_b cos theta), m/s2 (0 when the block holds).
+    double expected_acceleration = 0.0;
+    /// Displacement along the incline against time, every step (s, m).
+    std::vector<double> time;
+    std::vector<double> along;
+};
+
+/// Slides the block on an incline of `angle_deg` with basal friction angle
+/// `friction_angle_deg` for `duration` s, with particle damping `damping` (1/s).
+BlockSlide sliding_block(double angle_deg, double friction_angle_deg, double duration,
+                         double damping = 0.0);
+
+}  // namespace rockfall::mpm::verification
