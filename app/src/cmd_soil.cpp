@@ -275,15 +275,25 @@ void run_soil_command(const SoilArgs& args) {
             document["measured_comparison"] =
                 report::measured_comparison_json(*comparison, *measured);
         std::cout << document.dump(2) << '\n';
-        return;
+    } else {
+        report::print_soil_summary(std::cout, record, args.scenario);
+        if (spring) print_spring_wall(file.scenario, outcome);
+        if (comparison)
+            report::print_measured_comparison(std::cout, *comparison, *measured, record);
+        if (!args.svg.empty()) std::cout << "wall-load figure written to " << args.svg << '\n';
+        if (frames)
+            std::cout << frames->count() << " VTK frames written to " << args.vtk_dir << '\n';
+        if (!args.csv.empty()) std::cout << "wall-load history written to " << args.csv << '\n';
+        if (!args.db.empty()) std::cout << "run and histories stored in " << args.db << '\n';
     }
-    report::print_soil_summary(std::cout, record, args.scenario);
-    if (spring) print_spring_wall(file.scenario, outcome);
-    if (comparison) report::print_measured_comparison(std::cout, *comparison, *measured, record);
-    if (!args.svg.empty()) std::cout << "wall-load figure written to " << args.svg << '\n';
-    if (frames) std::cout << frames->count() << " VTK frames written to " << args.vtk_dir << '\n';
-    if (!args.csv.empty()) std::cout << "wall-load history written to " << args.csv << '\n';
-    if (!args.db.empty()) std::cout << "run and histories stored in " << args.db << '\n';
+    // A numerical failure is a failed run, whatever was written of it (exit 1): a script must
+    // not take its wall load for a result.
+    if (outcome.status == mpm::SoilStatus::non_finite) {
+        std::cout.flush();
+        std::cerr << "rockfall: the soil run failed: " << outcome.message
+                  << " (status non_finite; what was computed until then is in the outputs)\n";
+        throw CLI::RuntimeError(exit_failure);
+    }
 }
 
 }  // namespace

@@ -108,6 +108,11 @@ std::string_view to_string(IntervalMethod method) {
     return method == IntervalMethod::wilson ? "wilson" : "clopper-pearson";
 }
 
+std::string_view display_name(IntervalMethod method) {
+    return method == IntervalMethod::wilson ? "Wilson score interval"
+                                            : "Clopper-Pearson exact interval";
+}
+
 IntervalMethod parse_interval_method(std::string_view name) {
     if (name == "wilson") return IntervalMethod::wilson;
     if (name == "clopper-pearson") return IntervalMethod::clopper_pearson;

@@ -26,7 +26,7 @@ Plot curve_figure(const db::ExceedanceCurve& curve, const std::string& title) {
     plot.y_min = 0.0;
     plot.y_max = 1.0;
     const std::string band = std::to_string(static_cast<int>(curve.confidence * 100.0 + 0.5)) +
-                             " % " + std::string(db::to_string(curve.method)) + " interval";
+                             " % " + std::string(db::display_name(curve.method));
     for (std::size_t g = 0; g < curve.groups.size(); ++g) {
         const db::CurveGroup& group = curve.groups[g];
         const char* color = palette[g % palette.size()];

@@ -250,8 +250,7 @@ namespace html {
 
 std::string proportion_interval_text(const SweepContext& c) {
     return confidence_text(c.options.confidence) + " % " +
-           (c.options.method == db::IntervalMethod::wilson ? "Wilson score interval"
-                                                           : "Clopper-Pearson exact interval");
+           std::string(db::display_name(c.options.method));
 }
 
 std::string percentile_interval_text(const SweepContext& c) {

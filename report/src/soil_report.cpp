@@ -98,8 +98,12 @@ void print_soil_summary(std::ostream& out, const db::SoilRunRecord& r, const std
         out << "wall: none in this scenario\n";
     }
     out << "deposit:\n";
-    out << "  runout " << fmt("%.2f m", r.runout_past_toe) << " past the toe (x "
-        << fmt("%.2f m", r.runout_x) << ")\n";
+    if (std::isfinite(r.runout_x)) {
+        out << "  runout " << fmt("%.2f m", r.runout_past_toe) << " past the toe (x "
+            << fmt("%.2f m", r.runout_x) << ")\n";
+    } else {
+        out << "  runout: none (the run ended " << r.outcome << ", before the soil came to rest)\n";
+    }
     if (!r.motion.empty()) {
         const db::SoilMotionSample& last = r.motion.back();
         out << "  final front x " << fmt("%.2f m", last.front_x) << ", centre of mass x "

@@ -160,6 +160,8 @@ enum class IntervalMethod {
 };
 /// Name on the command line ("wilson", "clopper-pearson").
 std::string_view to_string(IntervalMethod method);
+/// Name in reports ("Wilson score interval", "Clopper-Pearson exact interval").
+std::string_view display_name(IntervalMethod method);
 /// The method of a name; throws std::invalid_argument listing the names.
 IntervalMethod parse_interval_method(std::string_view name);
 
