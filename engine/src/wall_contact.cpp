@@ -1,6 +1,7 @@
 // The compliant contact at the reaction wall: analytic and nondimensional impact solutions
 // (Hertz after Johnson 1985, the clamped linear spring-dashpot after Schwager and Poeschel 2007,
-// Hertz with Tsuji, Tanaka and Ishida 1992 damping), overlap geometry, force law and friction.
+// Hertz with Tsuji, Tanaka and Ishida 1992 damping), overlap geometry, force laws (the sphere's
+// and the rounded polyhedron's, docs/wall_contact.md) and friction.
 
 #include "engine/wall_contact.hpp"
 
@@ -389,9 +390,9 @@ RoundedForce WallContactLaw::rounded_normal_force(const WallOverlap& overlap,
     };
     const HullPenetration& p = overlap.hull;
     if (p.edge_length > 0.0) {
-        // A cylinder of radius r_c and length L on a half-space: Johnson (1985), sec. 4.3, line
-        // contact, linearised as F = pi/4 E* L d (its approach has only a logarithmic term in
-        // the force besides).
+        // A cylinder of radius r_c and length L on a half-space: Johnson (1985), pp. 99-104,
+        // line contact of cylinders, linearised as F = pi/4 E* L d (its approach has a
+        // logarithmic term besides).
         const double edge = linear(pi / 4.0 * effective_modulus_ * p.edge_length, p.edge_depth);
         if (edge > result.normal) {
             result = {edge, HullContactClass::edge};
