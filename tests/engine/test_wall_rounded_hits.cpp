@@ -13,14 +13,17 @@
 #include <numbers>
 #include <vector>
 
-using Catch::Matchers::WithinRel;
 using namespace rockfall::engine;
+using Catch::Matchers::WithinRel;
 
 namespace {
 
+using test::first_hit;
+
+// A 0.2 m massive rock (the mass of the sphere of its nominal size) at 8 m/s.
+constexpr double kSpeed = 8.0;
 constexpr double kSize = 0.2;
 constexpr double kDensity = 2600.0;
-constexpr double kSpeed = 8.0;
 const double kMass = kDensity * std::numbers::pi / 6.0 * kSize * kSize * kSize;
 
 WallContact rounded(int steps_per_contact = 100) {
@@ -36,12 +39,6 @@ Scenario massive_hit(const WallContact& contact, double e, double yaw_deg) {
     scenario.rocks[0].rock.kind = rockfall::shapes::RockKind::massive;
     scenario.rocks[0].release.orientation_deg = Vec3(0.0, 0.0, yaw_deg);
     return scenario;
-}
-
-const WallHit& first_hit(const Outcome& outcome) {
-    REQUIRE(outcome.rocks.size() == 1);
-    REQUIRE(!outcome.rocks[0].wall_hits.empty());
-    return outcome.rocks[0].wall_hits.front();
 }
 
 }  // namespace

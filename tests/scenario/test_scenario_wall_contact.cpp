@@ -14,10 +14,13 @@ using rockfall::scenario::ScenarioError;
 
 namespace {
 
+// Parses `table` as the [wall_contact] table of an otherwise default scenario.
+void parse_wall_contact(const std::string& table) {
+    rockfall::scenario::parse_scenario("[wall_contact]\n" + table, "wall.toml");
+}
+
 ScenarioError wall_contact_error(const std::string& table) {
-    return rockfall::test::parse_error(
-        [](const std::string& t) { rockfall::scenario::parse_scenario(t, "wall.toml"); },
-        "[wall_contact]\n" + table);
+    return rockfall::test::parse_error(parse_wall_contact, table);
 }
 
 }  // namespace
