@@ -152,10 +152,8 @@ Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options
             RockRecorder(scenario, slope_, static_cast<int>(i), rolling_radius, options),
             StopRule(scenario.numerics, slope_, bounding_radius));
         if (slope_.wall()) {
-            const double radius =
-                rock.geometry.radius > 0.0 ? rock.geometry.radius : rolling_radius;
             rock.law.emplace(scenario.wall_contact, scenario.materials.wall, spec.rock.material,
-                             rock.mass, radius);
+                             rock.mass, rock.geometry);
         }
         rock.body_state = initial;
         rock.state = rock_state(initial, 0.0, rock.mass, rock.inertia);

@@ -1,6 +1,7 @@
 // The compliant contact at the reaction wall: analytic and nondimensional impact solutions
 // (Hertz after Johnson 1985, the clamped linear spring-dashpot after Schwager and Poeschel 2007,
-// Hertz with Tsuji, Tanaka and Ishida 1992 damping), overlap geometry, force law and friction.
+// Hertz with Tsuji, Tanaka and Ishida 1992 damping), overlap geometry, force laws (the sphere's
+// and the rounded polyhedron's, docs/wall_contact.md) and friction.
 
 #include "engine/wall_contact.hpp"
 
@@ -211,7 +212,8 @@ const TsujiImpact& tsuji_impact_for_restitution(double restitution) {
 
 std::optional<WallOverlap> wall_overlap(const shapes::OrientedBox& wall,
                                         const shapes::RockGeometry& rock, const Vec3& position,
-                                        const Eigen::Quaterniond& orientation) {
+                                        const Eigen::Quaterniond& orientation,
+                                        const HullFeatures* features) {
     Vec3 normal = Vec3::Zero();
     const double centre_distance = shapes::signed_distance(wall, position, &normal);
     if (centre_distance >= rock.bounding_radius) {
@@ -222,13 +224,14 @@ std::optional<WallOverlap> wall_overlap(const shapes::OrientedBox& wall,
         if (depth <= 0.0) {
             return std::nullopt;
         }
-        return WallOverlap{depth, normal, position - rock.radius * normal};
+        return WallOverlap{depth, normal, position - rock.radius * normal, {}};
     }
     // Hull: the vertices inside the wall, aggregated into one contact so that a face lying
     // flat on the wall is as stiff as a corner (the law's radius is the rock's, not a vertex's).
     const Eigen::Matrix3d rotation = orientation.toRotationMatrix();
     WallOverlap overlap;
     Vec3 weighted_point = Vec3::Zero();
+    Vec3 deepest = Vec3::Zero();
     double weight = 0.0;
     for (const Vec3& body_vertex : rock.hull.vertices) {
         const Vec3 vertex = position + rotation * body_vertex;
@@ -242,12 +245,19 @@ std::optional<WallOverlap> wall_overlap(const shapes::OrientedBox& wall,
         if (depth > overlap.depth) {
             overlap.depth = depth;
             overlap.normal = face_normal;
+            deepest = vertex;
         }
     }
     if (weight <= 0.0) {
         return std::nullopt;
     }
     overlap.point = weighted_point / weight;
+    if (features != nullptr) {
+        // The plane through the deepest vertex, in the body frame: x_b . n_b < offset inside.
+        const Vec3 normal_body = rotation.transpose() * overlap.normal;
+        const double offset = normal_body.dot(rotation.transpose() * (deepest - position));
+        overlap.hull = hull_penetration(rock.hull, *features, normal_body, offset + overlap.depth);
+    }
     return overlap;
 }
 
@@ -273,6 +283,39 @@ WallContactLaw::WallContactLaw(const WallContact& spec, const Material& wall, co
     }
 }
 
+WallContactLaw::WallContactLaw(const WallContact& spec, const Material& wall, const Material& rock,
+                               double mass, const shapes::RockGeometry& geometry)
+    : WallContactLaw(spec, wall, rock, mass,
+                     geometry.radius > 0.0 ? geometry.radius : 0.5 * geometry.nominal_size) {
+    if (geometry.radius > 0.0 || spec.hull_model == WallContact::HullModel::sphere) {
+        return;
+    }
+    if (spec.model != WallContact::Model::hertz) {
+        throw std::invalid_argument(
+            "wall contact: hull_model = \"rounded\" needs model = \"hertz\" (its corner is a "
+            "Hertz contact)");
+    }
+    assert(spec.corner_roundness > 0.0 && spec.corner_roundness <= 1.0);
+    rounded_ = true;
+    features_ = engine::hull_features(geometry.hull);
+    // Wadell roundness: mean corner radius over the inscribed radius (seed 001, eq. 2).
+    corner_radius_ = spec.corner_roundness * features_.inscribed_radius;
+    radius_ = corner_radius_;
+    hertz_stiffness_ = 4.0 / 3.0 * effective_modulus_ * std::sqrt(radius_);
+    // The edge and face laws are linear in the overlap: the clamped spring-dashpot's beta.
+    damping_ratio_ = clamped_damping_ratio(restitution_);
+}
+
+double WallContactLaw::tsuji_duration(double hertz_stiffness, double speed) const {
+    // Time unit D / v0 = (m / k)^(2/5) v0^(-1/5) of the nondimensional Tsuji impact.
+    const double time_unit = std::pow(mass_ / hertz_stiffness, 0.4) * std::pow(speed, -0.2);
+    return tsuji_impact_for_restitution(restitution_).duration * time_unit;
+}
+
+double WallContactLaw::linear_duration(double stiffness) const {
+    return linear_impact(damping_ratio_).duration * std::sqrt(mass_ / stiffness);
+}
+
 double WallContactLaw::hertz_equivalent_stiffness(double approach_speed) const {
     // Peak of the linear law is v0 sqrt(m k) times linear_impact(beta).peak_force; setting it
     // equal to Hertz's elastic peak gives k in closed form.
@@ -285,13 +328,26 @@ double WallContactLaw::hertz_equivalent_stiffness(double approach_speed) const {
 double WallContactLaw::contact_duration(double approach_speed) const {
     const double speed = std::max(approach_speed, kMinContactSpeed);
     if (spec_.model == WallContact::Model::hertz) {
-        // Time unit D / v0 = (m / k)^(2/5) v0^(-1/5) of the nondimensional Tsuji impact.
-        const double time_unit = std::pow(mass_ / hertz_stiffness_, 0.4) * std::pow(speed, -0.2);
-        return tsuji_impact_for_restitution(restitution_).duration * time_unit;
+        const double corner = tsuji_duration(hertz_stiffness_, speed);
+        if (!rounded_) {
+            return corner;
+        }
+        // The stiffest edge and face the rock has (rounded_normal_force's laws).
+        const double edge = linear_duration(pi / 4.0 * effective_modulus_ * features_.longest_edge);
+        const double face =
+            linear_duration(2.0 * effective_modulus_ * std::sqrt(features_.largest_face_area / pi));
+        return std::min({corner, edge, face});
     }
-    const double stiffness =
-        spec_.linear_stiffness > 0.0 ? spec_.linear_stiffness : hertz_equivalent_stiffness(speed);
-    return linear_impact(damping_ratio_).duration * std::sqrt(mass_ / stiffness);
+    return linear_duration(spec_.linear_stiffness > 0.0 ? spec_.linear_stiffness
+                                                        : hertz_equivalent_stiffness(speed));
+}
+
+double WallContactLaw::longest_contact_duration(double approach_speed) const {
+    if (!rounded_) {
+        return contact_duration(approach_speed);
+    }
+    // The rounded law's force is never below the corner's Hertz force.
+    return tsuji_duration(hertz_stiffness_, std::max(approach_speed, kMinContactSpeed));
 }
 
 void WallContactLaw::begin_contact(double approach_speed) {
@@ -318,6 +374,43 @@ double WallContactLaw::normal_force(double overlap, double overlap_rate) const {
                              damping_ * std::sqrt(mass_ * hertz_stiffness_) * root * overlap_rate);
 }
 
+RoundedForce WallContactLaw::rounded_normal_force(const WallOverlap& overlap,
+                                                  double overlap_rate) const {
+    assert(rounded_);
+    // Each class's law is the contact of its rounded feature; the largest one carries the
+    // contact. Every candidate is continuous in the rock's pose (the edge's and the section's
+    // measures grow from zero as a feature reaches the plane), so the force has no jump when
+    // the class changes, and no feature's force is counted twice.
+    RoundedForce result{normal_force(overlap.depth, overlap_rate), HullContactClass::corner};
+    // Spring-dashpot F = k d + 2 beta sqrt(m k) d' with the clamped law's beta, so a contact
+    // of fixed k rebounds with the configured restitution (linear_impact).
+    const auto linear = [this, overlap_rate](double stiffness, double depth) {
+        return stiffness * depth +
+               2.0 * damping_ratio_ * std::sqrt(mass_ * stiffness) * overlap_rate;
+    };
+    const HullPenetration& p = overlap.hull;
+    if (p.edge_length > 0.0) {
+        // A cylinder of radius r_c and length L on a half-space: Johnson (1985), pp. 99-104,
+        // line contact of cylinders, linearised as F = pi/4 E* L d (its approach has a
+        // logarithmic term besides).
+        const double edge = linear(pi / 4.0 * effective_modulus_ * p.edge_length, p.edge_depth);
+        if (edge > result.normal) {
+            result = {edge, HullContactClass::edge};
+        }
+    }
+    if (p.section_area > 0.0) {
+        // A flat face with rounded rim as a rigid flat circular punch of the penetrating
+        // polygon's area A: F = 2 E* a d, a = sqrt(A / pi) (Sneddon 1965; Johnson 1985, sec. 3.8),
+        // d the mean depth over the section.
+        const double face = linear(2.0 * effective_modulus_ * std::sqrt(p.section_area / pi),
+                                   p.volume / p.section_area);
+        if (face > result.normal) {
+            result = {face, HullContactClass::face};
+        }
+    }
+    return result;
+}
+
 WallForce WallContactLaw::force(const WallOverlap& overlap,
                                 const Vec3& contact_point_velocity) const {
     assert(friction_step_ > 0.0);
@@ -326,7 +419,8 @@ WallForce WallContactLaw::force(const WallOverlap& overlap,
     WallForce result;
     result.point = overlap.point;
     result.normal_direction = n;
-    result.normal = normal_force(overlap.depth, -normal_velocity);
+    result.normal = rounded_ ? rounded_normal_force(overlap, -normal_velocity).normal
+                             : normal_force(overlap.depth, -normal_velocity);
     result.force = result.normal * n;
     const Vec3 slip = contact_point_velocity - normal_velocity * n;
     const double slip_speed = slip.norm();

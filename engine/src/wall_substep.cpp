@@ -35,8 +35,8 @@ WallContactAt wall_contact_at(const shapes::OrientedBox& wall, const WallRock& r
                               const BodyState& state, double time, int steps_per_contact,
                               double coarse_dt) {
     WallContactTrack& track = rock.track;
-    const std::optional<WallOverlap> overlap =
-        wall_overlap(wall, rock.geometry, state.position, state.orientation);
+    const std::optional<WallOverlap> overlap = wall_overlap(
+        wall, rock.geometry, state.position, state.orientation, rock.law.hull_features());
     const bool first_touch = overlap && !track.touching;
     track.touching = overlap.has_value();
     WallContactAt at;
@@ -59,7 +59,7 @@ WallContactAt wall_contact_at(const shapes::OrientedBox& wall, const WallRock& r
         rock.law.begin_contact(speed);
         track.step = fine_step(rock.law, speed, steps_per_contact, coarse_dt);
         track.start = time;
-        track.duration = rock.law.contact_duration(speed);
+        track.duration = rock.law.longest_contact_duration(speed);
     } else if (rock.rigid_resting &&
                time - track.start > kRestingContactDurations * track.duration) {
         at.kind = WallContactAt::Kind::resting;

@@ -188,6 +188,7 @@ void read_material(TableReader& parent, std::string_view key, engine::Material& 
 
 void read_wall_contact(TableReader& r, engine::WallContact& contact) {
     read_enum(r, "model", wall_model_names, contact.model);
+    read_enum(r, "hull_model", wall_hull_model_names, contact.hull_model);
     read_fields(r, contact, wall_contact_fields);
 }
 

@@ -94,13 +94,14 @@ inline const Fields<shapes::ReactionWall, 4> wall_fields{{
     {"thickness", &shapes::ReactionWall::thickness, "m", positive()},
 }};
 
-inline const Fields<engine::WallContact, 6> wall_contact_fields{{
+inline const Fields<engine::WallContact, 7> wall_contact_fields{{
     {"rock_youngs_modulus", &engine::WallContact::rock_youngs_modulus, "Pa", positive()},
     {"rock_poisson_ratio", &engine::WallContact::rock_poisson_ratio, "", half_open(0.0, 0.5)},
     {"wall_youngs_modulus", &engine::WallContact::wall_youngs_modulus, "Pa", positive()},
     {"wall_poisson_ratio", &engine::WallContact::wall_poisson_ratio, "", half_open(0.0, 0.5)},
     {"linear_stiffness", &engine::WallContact::linear_stiffness, "N/m", non_negative()},
     {"steps_per_contact", &engine::WallContact::steps_per_contact, "", closed(20, 1000)},
+    {"corner_roundness", &engine::WallContact::corner_roundness, "", {0.0, 1.0, true, false}},
 }};
 
 inline const Fields<engine::PressureCells, 6> wall_cells_fields{{
@@ -164,6 +165,11 @@ constexpr std::string_view name_of(const std::array<EnumName<E>, N>& names, E va
 inline constexpr std::array<EnumName<engine::WallContact::Model>, 2> wall_model_names{{
     {"hertz", engine::WallContact::Model::hertz},
     {"linear", engine::WallContact::Model::linear},
+}};
+
+inline constexpr std::array<EnumName<engine::WallContact::HullModel>, 2> wall_hull_model_names{{
+    {"sphere", engine::WallContact::HullModel::sphere},
+    {"rounded", engine::WallContact::HullModel::rounded},
 }};
 
 inline constexpr std::array<EnumName<engine::WallStepping>, 2> wall_stepping_names{{

@@ -277,6 +277,12 @@ std::vector<ScenarioProblem> find_problems(const engine::Scenario& s, const Sour
     c.check_fields(s.materials.side_walls, "materials.side_walls", material_fields);
     c.check_fields(s.materials.wall, "materials.wall", material_fields);
     c.check_fields(s.wall_contact, "wall_contact", wall_contact_fields);
+    if (s.wall_contact.hull_model == engine::WallContact::HullModel::rounded &&
+        s.wall_contact.model != engine::WallContact::Model::hertz) {
+        c.fail("wall_contact.hull_model", "\"rounded\"",
+               "needs wall_contact.model = \"hertz\" (the rounded corner is a Hertz contact; "
+               "its edges and faces have their own linear laws)");
+    }
     check_wall_cells(c, s);
     if (s.rocks.empty() && !s.cluster) {
         c.fail("rocks", "[]", "must have at least one rock (or a [cluster])");

@@ -154,6 +154,8 @@ std::string format_scenario(const engine::Scenario& s) {
 
     w.header("wall_contact");
     w.line("model", toml_string(detail::name_of(detail::wall_model_names, s.wall_contact.model)));
+    w.line("hull_model",
+           toml_string(detail::name_of(detail::wall_hull_model_names, s.wall_contact.hull_model)));
     w.fields(s.wall_contact, detail::wall_contact_fields);
     if (s.wall_cells) {
         w.header("wall_cells");

@@ -2,6 +2,8 @@
 // m x'' = -F(x, x') integrated here with small RK4 steps, the analytic impacts, the overlap
 // geometry and the load cell's bookkeeping.
 
+#include "wall_fixtures.hpp"
+
 #include "engine/wall_contact.hpp"
 
 #include <catch2/catch.hpp>
@@ -15,6 +17,8 @@
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using namespace rockfall::engine;
+using rockfall::engine::test::effective_modulus_of;
+using rockfall::engine::test::seed_wall;
 using rockfall::shapes::OrientedBox;
 using rockfall::shapes::RockGeometry;
 
@@ -46,16 +50,7 @@ ImpactRun integrate_impact(const Force& force, double mass, double speed, double
     ImpactRun run;
     run.peak_force = force(x, v);
     for (;;) {
-        const double k1x = v;
-        const double k1v = acceleration(x, v);
-        const double k2x = v + 0.5 * dt * k1v;
-        const double k2v = acceleration(x + 0.5 * dt * k1x, v + 0.5 * dt * k1v);
-        const double k3x = v + 0.5 * dt * k2v;
-        const double k3v = acceleration(x + 0.5 * dt * k2x, v + 0.5 * dt * k2v);
-        const double k4x = v + dt * k3v;
-        const double k4v = acceleration(x + dt * k3x, v + dt * k3v);
-        const double x_next = x + dt / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-        const double v_next = v + dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+        const auto [x_next, v_next] = test::rk4_step(acceleration, {x, v}, dt);
         ++run.steps;
         if (may_pull && x_next <= 0.0) {
             const double fraction = x / (x - x_next);
@@ -103,11 +98,6 @@ WallContactLaw make_law(const WallContact& spec, double restitution) {
 
 Force law_force(const WallContactLaw& law) {
     return [&law](double x, double v) { return law.normal_force(x, v); };
-}
-
-double effective_modulus_of(const WallContact& spec) {
-    return effective_modulus(spec.rock_youngs_modulus, spec.rock_poisson_ratio,
-                             spec.wall_youngs_modulus, spec.wall_poisson_ratio);
 }
 
 }  // namespace
@@ -269,15 +259,6 @@ TEST_CASE("restitution below the supported minimum is rejected", "[wall_contact]
 
 namespace {
 
-// The seed's wall: front face at x = 9.75 facing upslope (-x), 0.5 m thick, 1.5 m high.
-OrientedBox seed_wall() {
-    OrientedBox wall;
-    wall.center = Vec3(10.0, 0.0, 0.75);
-    wall.half_extents = Vec3(0.25, 2.5, 0.75);
-    wall.role = rockfall::shapes::SurfaceRole::reaction_wall;
-    return wall;
-}
-
 RockGeometry sphere_rock(double radius) {
     RockGeometry rock;
     rock.radius = radius;
@@ -378,7 +359,7 @@ TEST_CASE("wall friction opposes slip, saturates at Coulomb and never pulls", "[
     REQUIRE_THAT(law.friction(), WithinRel(0.5, 1e-12));
     const double speed = 8.0;
     law.begin_contact(speed);
-    const WallOverlap overlap{1e-3, Vec3(-1.0, 0.0, 0.0), Vec3(9.75, 0.0, 0.5)};
+    const WallOverlap overlap{1e-3, Vec3(-1.0, 0.0, 0.0), Vec3(9.75, 0.0, 0.5), {}};
 
     // Fast slip along +y while pressing into the wall: full Coulomb friction along -y.
     const WallForce sliding = law.force(overlap, Vec3(2.0, 3.0, 0.0));

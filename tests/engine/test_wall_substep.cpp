@@ -15,6 +15,7 @@
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using namespace rockfall::engine;
+using rockfall::engine::test::first_hit;
 
 namespace {
 
@@ -26,12 +27,6 @@ Scenario hit_scenario(WallStepping stepping) {
     Scenario scenario = test::wall_scenario(WallContact{}, 0.3, kSize, kSpeed, kDensity);
     scenario.numerics.wall_stepping = stepping;
     return scenario;
-}
-
-const WallHit& first_hit(const Outcome& outcome) {
-    REQUIRE(outcome.rocks.size() == 1);
-    REQUIRE(!outcome.rocks[0].wall_hits.empty());
-    return outcome.rocks[0].wall_hits.front();
 }
 
 }  // namespace

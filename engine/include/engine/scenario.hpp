@@ -60,6 +60,17 @@ struct WallContact {
     double linear_stiffness = 0.0;
     /// Time steps per estimated contact duration near the wall, in [20, 1000].
     int steps_per_contact = 100;
+    /// Force law of a hull rock at the wall (spheres always use `model` with their radius).
+    enum class HullModel {
+        sphere,   ///< `model` with R = half the nominal size
+        rounded,  ///< rounded polyhedron: Hertz at a corner, line contact along an edge, flat
+                  ///< punch on a face (docs/wall_contact.md); needs model = hertz
+    };
+    HullModel hull_model = HullModel::sphere;
+    /// Wadell roundness of a hull rock's corners and edges (mean corner radius over the
+    /// inscribed radius), in (0, 1]; the rounded model's corner radius is this times the hull's
+    /// inscribed radius about its centroid. Default: seed 001's measured mean.
+    double corner_roundness = 0.38;
 };
 
 /// One rock: its shape, size and material.

@@ -10,6 +10,7 @@
 
 #include <Eigen/Geometry>
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -78,6 +79,39 @@ TsujiImpact tsuji_impact(double alpha);
 /// per e (thread-safe).
 const TsujiImpact& tsuji_impact_for_restitution(double restitution);
 
+/// A convex hull as the rounded-polyhedron wall law sees it, computed once per rock.
+struct HullFeatures {
+    /// Feature edges (between faces that are not coplanar), as index pairs into the hull's
+    /// vertices; the diagonals of a face's triangles are left out.
+    std::vector<std::array<int, 2>> edges;
+    /// Radius of the largest sphere about the centroid (the body-frame origin) inside the
+    /// hull: the smallest distance from the centroid to a face plane, m (> 0).
+    double inscribed_radius = 0.0;
+    /// Area of the largest face (coplanar triangles merged), m2.
+    double largest_face_area = 0.0;
+    /// Length of the longest feature edge, m.
+    double longest_edge = 0.0;
+};
+/// The features of a hull whose centroid is the origin (shapes::RockGeometry's body frame).
+HullFeatures hull_features(const shapes::ConvexPolyhedron& hull);
+
+/// How deep a hull reaches into the wall's plane, for the rounded-polyhedron law. Depth is
+/// measured from the plane along its normal; all zero when nothing penetrates.
+struct HullPenetration {
+    /// Penetrating length of the feature edge with the largest integral of depth along it, m.
+    double edge_length = 0.0;
+    /// Mean depth along that penetrating length, m.
+    double edge_depth = 0.0;
+    /// Area of the hull's section by the plane (the penetrating polygon), m2.
+    double section_area = 0.0;
+    /// Volume of the hull beyond the plane, m3.
+    double volume = 0.0;
+};
+/// Penetration of `hull` (body frame) into the half-space {x : normal . x < offset}, normal a
+/// unit vector in the body frame.
+HullPenetration hull_penetration(const shapes::ConvexPolyhedron& hull, const HullFeatures& features,
+                                 const Vec3& normal, double offset);
+
 /// Overlap of a rock with the wall box at one instant.
 struct WallOverlap {
     /// Penetration depth, m (> 0).
@@ -86,15 +120,20 @@ struct WallOverlap {
     Vec3 normal = Vec3::Zero();
     /// Contact point (depth-weighted mean of the penetrating points), world frame, m.
     Vec3 point = Vec3::Zero();
+    /// A hull's penetration into the plane through its deepest vertex normal to `normal`
+    /// (only when wall_overlap was given the hull's features; zero otherwise).
+    HullPenetration hull;
 };
 
 /// Overlap of a rock (geometry in its body frame, placed at `position` with `orientation`)
 /// with the wall box; empty when they do not touch. A sphere's penetrating point is its
 /// deepest point; a hull's are its vertices inside the box, aggregated into one contact (the
-/// stiffness does not multiply with the number of touching vertices).
+/// stiffness does not multiply with the number of touching vertices). With `features` (those
+/// of the rock's hull) a hull's penetration is measured too.
 std::optional<WallOverlap> wall_overlap(const shapes::OrientedBox& wall,
                                         const shapes::RockGeometry& rock, const Vec3& position,
-                                        const Eigen::Quaterniond& orientation);
+                                        const Eigen::Quaterniond& orientation,
+                                        const HullFeatures* features = nullptr);
 
 /// Force on the rock from the wall, world frame, and the point where it acts.
 struct WallForce {
@@ -106,6 +145,19 @@ struct WallForce {
     Vec3 normal_direction = Vec3::Zero();
 };
 
+/// What of a hull carries the rounded-polyhedron law's force.
+enum class HullContactClass {
+    corner,  ///< Hertz at a sphere of the corner radius
+    edge,    ///< line contact of a cylinder of the corner radius
+    face,    ///< flat punch of the penetrating polygon
+};
+
+/// The rounded-polyhedron law's normal force and the class that gives it.
+struct RoundedForce {
+    double normal = 0.0;  ///< N (>= 0)
+    HullContactClass contact_class = HullContactClass::corner;
+};
+
 /// Normal force law and Coulomb friction for one rock against the wall.
 class WallContactLaw {
   public:
@@ -115,10 +167,27 @@ class WallContactLaw {
     /// std::invalid_argument when the mean restitution is below kMinWallRestitution.
     WallContactLaw(const WallContact& spec, const Material& wall, const Material& rock, double mass,
                    double radius);
+    /// The law of `geometry` (body frame, centroid at the origin): a sphere's Hertz law with
+    /// its radius; a hull's per spec.hull_model, either `model` with half the nominal size or
+    /// the rounded-polyhedron law (which needs model = hertz).
+    WallContactLaw(const WallContact& spec, const Material& wall, const Material& rock, double mass,
+                   const shapes::RockGeometry& geometry);
 
     /// Contact duration (first touch to vanishing force) for a normal approach speed v
-    /// (m/s, > 0), s.
+    /// (m/s, > 0), s. For the rounded law the shortest of its classes (the largest face
+    /// landing flat, or the longest edge), which sets the fine step.
     double contact_duration(double approach_speed) const;
+    /// The longest contact duration for approach speed v (m/s, > 0), s: contact_duration for
+    /// the sphere laws, the corner's Hertz contact for the rounded law.
+    double longest_contact_duration(double approach_speed) const;
+    /// The hull's features when the rounded law is in use (pass them to wall_overlap), else
+    /// null.
+    const HullFeatures* hull_features() const { return rounded_ ? &features_ : nullptr; }
+    /// Corner radius of the rounded law, m (0 for the sphere laws).
+    double corner_radius() const { return corner_radius_; }
+    /// The rounded law's normal force for an overlap with its hull penetration and the
+    /// overlap rate (m/s): the largest of corner, edge and face (clamped at 0).
+    RoundedForce rounded_normal_force(const WallOverlap& overlap, double overlap_rate) const;
     /// Call at first touch with the normal approach speed (m/s); fixes velocity-dependent
     /// parameters (the Hertz-equivalent linear stiffness, the friction regularisation).
     /// Speeds below kMinContactSpeed count as that speed.
@@ -151,7 +220,15 @@ class WallContactLaw {
     // Linear stiffness giving Hertz's elastic peak force at this approach speed, N/m.
     double hertz_equivalent_stiffness(double approach_speed) const;
 
+    // Tsuji duration of a Hertz contact of stiffness k_n (N/m^1.5) at speed v, s.
+    double tsuji_duration(double hertz_stiffness, double speed) const;
+    // Clamped spring-dashpot duration of stiffness k (N/m), s.
+    double linear_duration(double stiffness) const;
+
     WallContact spec_;
+    bool rounded_ = false;
+    HullFeatures features_;
+    double corner_radius_ = 0.0;  // r_c = roundness x inscribed radius, m
     double friction_ = 0.0;
     double restitution_ = 0.0;
     double mass_ = 0.0;
@@ -159,8 +236,8 @@ class WallContactLaw {
     double effective_modulus_ = 0.0;
     double hertz_stiffness_ = 0.0;  // k_n = 4/3 E* sqrt(R), N/m^1.5
     double stiffness_ = 0.0;        // linear model, N/m
-    double damping_ = 0.0;          // linear: N s/m; Hertz: Tsuji's alpha
-    double damping_ratio_ = 0.0;    // linear model's beta
+    double damping_ = 0.0;          // linear: N s/m; Hertz and rounded: Tsuji's alpha
+    double damping_ratio_ = 0.0;    // linear model's beta (and the rounded edge's and face's)
     double friction_step_ = 0.0;    // fine step assumed by the friction regularisation, s
 };
 
