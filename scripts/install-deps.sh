@@ -21,6 +21,9 @@ packages=(
     libxml2-utils
     # fuzz targets (scripts/fuzz.sh, run by CI): clang and its libFuzzer runtime
     clang libclang-rt-14-dev
+    # the Debian package (CPack's DEB generator runs `file` to find the binaries it hands to
+    # dpkg-shlibdeps; a bare Debian 12 with --no-install-recommends has no `file`)
+    file dpkg-dev
 )
 
 missing=()
