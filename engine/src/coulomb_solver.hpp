@@ -12,8 +12,9 @@ namespace rockfall::engine {
 // impulse is positive; when a point's normal impulse falls to zero in a later iteration (the
 // load moves to other points of a face), its friction impulse stays and acts without any
 // normal force. A block sliding on a 30 degree incline then accelerated 4 % (mu = 0.3) to 16 %
-// (mu = 0.5) below g (sin t - mu cos t). After each iteration this solver removes the friction
-// and rolling-friction impulses of points that carry no normal impulse.
+// (mu = 0.5) below g (sin t - mu cos t). After each iteration this solver removes the
+// rolling-friction impulses of points that carry no normal impulse; the sliding friction is the
+// patch's below, bounded by the patch's whole normal impulse.
 //
 // Bullet also caps each rolling-friction row at its coefficient (a length, mu_r r) times one
 // unit of impulse, whatever the normal impulse: at an impact, where the normal impulse is

@@ -286,7 +286,7 @@ int add_box_face_contacts(const btCollisionObjectWrapper* hull, const btCollisio
     // Points of GJK's on a box edge (normals tilted off the face) are left as found.
     for (int i = 0; i < manifold.getNumContacts(); ++i) {
         const btVector3& n = manifold.getContactPoint(i).m_normalWorldOnB;
-        if ((hull_first ? n : -n).dot(faces.front().normal) < kFaceAlignment) {
+        if (!same_face_normal(hull_first ? n : -n, faces.front().normal)) {
             return 0;
         }
     }
