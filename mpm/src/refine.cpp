@@ -1,5 +1,6 @@
 #include "mpm/refine.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -81,6 +82,27 @@ RefinementLevel refinement_level(const SoilOutcome& o, double cell_size, double 
     return level;
 }
 
+void extrapolate_study(RefinementStudy& study) {
+    const std::size_t n = study.levels.size();
+    // A level that did not complete (left the domain, non-finite) has no converged value to
+    // extrapolate from.
+    study.extrapolated = n >= 3 && std::all_of(study.levels.end() - 3, study.levels.end(),
+                                               [](const RefinementLevel& l) {
+                                                   return l.status == SoilStatus::completed;
+                                               });
+    if (!study.extrapolated) {
+        return;
+    }
+    study.ratio = std::sqrt(study.levels[n - 3].cell_size / study.levels[n - 1].cell_size);
+    study.peak_wall_force =
+        extrapolate(study.levels, study.ratio, &RefinementLevel::peak_wall_force);
+    study.peak_time = extrapolate(study.levels, study.ratio, &RefinementLevel::peak_time);
+    study.steady_wall_force =
+        extrapolate(study.levels, study.ratio, &RefinementLevel::steady_wall_force);
+    study.runout_past_toe =
+        extrapolate(study.levels, study.ratio, &RefinementLevel::runout_past_toe);
+}
+
 RefinementStudy run_refinement(const SoilScenario& scenario, const RefinementSettings& settings,
                                const RefinementProgress& progress) {
     validate(scenario);
@@ -114,18 +136,7 @@ RefinementStudy run_refinement(const SoilScenario& scenario, const RefinementSet
             progress(static_cast<int>(i), study.levels.back());
         }
     }
-    const std::size_t n = cells.size();
-    if (n >= 3) {
-        study.extrapolated = true;
-        study.ratio = std::sqrt(cells[n - 3] / cells[n - 1]);
-        study.peak_wall_force =
-            extrapolate(study.levels, study.ratio, &RefinementLevel::peak_wall_force);
-        study.peak_time = extrapolate(study.levels, study.ratio, &RefinementLevel::peak_time);
-        study.steady_wall_force =
-            extrapolate(study.levels, study.ratio, &RefinementLevel::steady_wall_force);
-        study.runout_past_toe =
-            extrapolate(study.levels, study.ratio, &RefinementLevel::runout_past_toe);
-    }
+    extrapolate_study(study);
     return study;
 }
 

@@ -215,6 +215,25 @@ SoilModel<Dim> build_soil_model(const SoilScenario& scenario) {
                             hinge + Vec3(0.0, std::max(inner, outer), r.side_board_height)));
         }
     }
+    // A bed steeper than the first segment leaves a wedge open below the hinge between the bed's
+    // end face and the segment's start face (both normal to their surfaces), through which the
+    // soil turning onto the slope leaked under it. A static box continuing the bed past the
+    // hinge at its steepest angle closes it: it lies below the segment's surface, and below the
+    // bed's at every angle of the tilt (the wedge only narrows as the bed tilts up to that angle).
+    const double wedge_deg = r.bed_angle_deg - scenario.slope.segments.front().angle_deg;
+    if (wedge_deg > 0.0) {
+        StaticBoundary filler;
+        const double length = bed_thickness * std::tan(radians(std::min(wedge_deg, 80.0))) + h;
+        filler.box = box_between(hinge + Vec3(0.0, -half_width - board, -bed_thickness),
+                                 hinge + Vec3(length, half_width + board, 0.0));
+        const Mat3 steepest = rotation_y(radians(r.bed_angle_deg));
+        filler.box.center = hinge + steepest * (filler.box.center - hinge);
+        filler.box.rotation = steepest;
+        filler.group = kSlopeGroup;
+        filler.kind = BoundaryKind::frictional;
+        filler.friction_coefficient = mu_basal;
+        statics.push_back(filler);
+    }
     bed.start_angle_deg = r.initial_bed_angle_deg;
     bed.end_angle_deg = r.bed_angle_deg;
     bed.duration = r.tilt_duration;

@@ -79,7 +79,9 @@ void print_refinement(std::ostream& out, const mpm::RefinementStudy& study,
         out << line << (timed ? fmt(" %10.1f", context.runtime[i]) : "") << status_note(l) << '\n';
     }
     if (!study.extrapolated) {
-        out << "no extrapolation: it needs three levels\n";
+        out << (study.levels.size() < 3
+                    ? "no extrapolation: it needs three levels\n"
+                    : "no extrapolation: one of the three finest levels did not complete\n");
         return;
     }
     out << "Richardson extrapolation from the three finest levels (refinement ratio "

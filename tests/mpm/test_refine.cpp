@@ -69,3 +69,33 @@ TEST_CASE("Refinement level: steady load is the mean over the last window", "[mp
     CHECK(level.peak_wall_force == 5.0);
     CHECK(level.peak_time == 0.2);
 }
+
+TEST_CASE("Refinement study: no extrapolation when a fine level did not complete",
+          "[mpm][refine]") {
+    RefinementStudy study;
+    for (const double h : {0.4, 0.2, 0.1, 0.05}) {
+        RefinementLevel l;
+        l.cell_size = h;
+        l.peak_wall_force = 10.0 - 8.0 * h;  // first order, limit 10
+        l.peak_time = 3.0;
+        l.steady_wall_force = 5.0 - 4.0 * h;
+        l.runout_past_toe = 0.5 - h;
+        study.levels.push_back(l);
+    }
+    extrapolate_study(study);
+    REQUIRE(study.extrapolated);
+    CHECK_THAT(study.ratio, WithinRel(2.0, 1e-12));
+    CHECK_THAT(study.peak_wall_force.extrapolated, WithinRel(10.0, 1e-9));
+    CHECK_THAT(study.peak_wall_force.order, WithinRel(1.0, 1e-9));
+    // A non-finite finest level (its values NaN) leaves the study without extrapolation.
+    study.levels.back().status = SoilStatus::non_finite;
+    study.levels.back().peak_wall_force = std::nan("");
+    extrapolate_study(study);
+    CHECK_FALSE(study.extrapolated);
+    // The coarsest level is not among the three used.
+    study.levels.back().status = SoilStatus::completed;
+    study.levels.back().peak_wall_force = 10.0 - 8.0 * 0.05;
+    study.levels.front().status = SoilStatus::left_domain;
+    extrapolate_study(study);
+    CHECK(study.extrapolated);
+}

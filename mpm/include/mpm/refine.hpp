@@ -68,7 +68,8 @@ struct RefinementSettings {
 struct RefinementStudy {
     /// The levels, coarsest first.
     std::vector<RefinementLevel> levels;
-    /// Whether the extrapolations below were computed (three or more levels).
+    /// Whether the extrapolations below were computed (three or more levels, the three finest
+    /// completed).
     bool extrapolated = false;
     /// Refinement ratio used for the extrapolation (geometric mean of the three finest).
     double ratio = 0.0;
@@ -89,6 +90,10 @@ using RefinementProgress = std::function<void(int, const RefinementLevel&)>;
 /// Runs `scenario` at every cell size of `settings` (numerics.cell_size replaced, the rest
 /// unchanged) and extrapolates. Invalid settings or scenario throw std::invalid_argument
 /// naming the field.
+/// Fills the study's extrapolations from its levels (cell sizes decreasing): computed when there
+/// are three or more levels and the three finest completed; otherwise `extrapolated` is false.
+void extrapolate_study(RefinementStudy& study);
+
 RefinementStudy run_refinement(const SoilScenario& scenario, const RefinementSettings& settings,
                                const RefinementProgress& progress = {});
 
