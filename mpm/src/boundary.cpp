@@ -25,12 +25,20 @@ double HingedBoundary::angular_velocity(double t) const {
     return radians(end_angle_deg - start_angle_deg) / duration;
 }
 
+shapes::OrientedBox rotated_about(const shapes::OrientedBox& box, const Vec3& pivot,
+                                  const Mat3& r) {
+    shapes::OrientedBox turned = box;
+    turned.center = pivot + r * (box.center - pivot);
+    turned.rotation = r * box.rotation;
+    return turned;
+}
+
 std::vector<shapes::OrientedBox> HingedBoundary::boxes_at(double t) const {
     const Mat3 r = rotation_y(radians(angle_deg(t)));
-    std::vector<shapes::OrientedBox> placed = boxes;
-    for (shapes::OrientedBox& box : placed) {
-        box.center = hinge + r * (box.center - hinge);
-        box.rotation = r * box.rotation;
+    std::vector<shapes::OrientedBox> placed;
+    placed.reserve(boxes.size());
+    for (const shapes::OrientedBox& box : boxes) {
+        placed.push_back(rotated_about(box, hinge, r));
     }
     return placed;
 }

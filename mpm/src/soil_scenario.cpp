@@ -224,11 +224,10 @@ SoilModel<Dim> build_soil_model(const SoilScenario& scenario) {
     if (wedge_deg > 0.0) {
         StaticBoundary filler;
         const double length = bed_thickness * std::tan(radians(std::min(wedge_deg, 80.0))) + h;
-        filler.box = box_between(hinge + Vec3(0.0, -half_width - board, -bed_thickness),
-                                 hinge + Vec3(length, half_width + board, 0.0));
-        const Mat3 steepest = rotation_y(radians(r.bed_angle_deg));
-        filler.box.center = hinge + steepest * (filler.box.center - hinge);
-        filler.box.rotation = steepest;
+        filler.box =
+            rotated_about(box_between(hinge + Vec3(0.0, -half_width - board, -bed_thickness),
+                                      hinge + Vec3(length, half_width + board, 0.0)),
+                          hinge, rotation_y(radians(r.bed_angle_deg)));
         filler.group = kSlopeGroup;
         filler.kind = BoundaryKind::frictional;
         filler.friction_coefficient = mu_basal;
@@ -241,11 +240,10 @@ SoilModel<Dim> build_soil_model(const SoilScenario& scenario) {
     bed.friction_coefficient = std::tan(radians(friction.bed_friction_angle_deg));
     bed.group = kBedGroup;
 
-    const Mat3 initial = rotation_y(radians(r.initial_bed_angle_deg));
-    shapes::OrientedBox block = box_between(hinge + Vec3(-r.length, -half_width, 0.0),
-                                            hinge + Vec3(0.0, half_width, r.thickness));
-    block.center = hinge + initial * (block.center - hinge);
-    block.rotation = initial;
+    const shapes::OrientedBox block =
+        rotated_about(box_between(hinge + Vec3(-r.length, -half_width, 0.0),
+                                  hinge + Vec3(0.0, half_width, r.thickness)),
+                      hinge, rotation_y(radians(r.initial_bed_angle_deg)));
     Particles<Dim> particles;
     model.particle_spacing = h / scenario.numerics.particles_per_cell;
     add_box_particles<Dim>(particles, block, model.particle_spacing, scenario.density);

@@ -62,6 +62,9 @@ struct SpringSupport {
     double damping = 0.0;
 };
 
+/// The box turned by rotation r about the point `pivot` (scene frame).
+shapes::OrientedBox rotated_about(const shapes::OrientedBox& box, const Vec3& pivot, const Mat3& r);
+
 /// A rigid body of boxes rotating about a horizontal axis parallel to scene y (the release
 /// bed). A positive angle lifts the body's -x side: scene points rotate by R_y(angle) about
 /// the hinge. The angle ramps linearly from start to end over [start_time, start_time +
