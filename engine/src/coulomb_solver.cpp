@@ -45,6 +45,12 @@ void CoulombSolver::convertContacts(btPersistentManifold** manifolds, int manifo
     disable_point_friction();
     build_patches(manifolds, manifold_count, info);
     aim_restitution_at_touch(info);
+    // The disabled point-friction rows would cost Bullet's iterations two row solves per point
+    // for nothing (both limits zero, no impulse): hidden from them by the pool's size, kept in
+    // memory for the points' write-back (report_patches). Bullet's setup sizes its friction
+    // order from the pool after this, so the iterations see no friction row.
+    point_friction_rows_ = m_tmpSolverContactFrictionConstraintPool.size();
+    m_tmpSolverContactFrictionConstraintPool.resizeNoInitialize(0);
 }
 
 void CoulombSolver::aim_restitution_at_touch(const btContactSolverInfo& info) {
@@ -293,6 +299,7 @@ double CoulombSolver::impulse_to_stop(const btSolverConstraint& row) const {
 
 btScalar CoulombSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int body_count,
                                                       const btContactSolverInfo& info) {
+    m_tmpSolverContactFrictionConstraintPool.resizeNoInitialize(point_friction_rows_);
     report_patches();
     return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, body_count,
                                                                               info);

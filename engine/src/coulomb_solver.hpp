@@ -76,6 +76,8 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
     void aim_restitution_at_touch(const btContactSolverInfo& info);
 
     std::vector<Patch> patches_;
+    // Bullet's point-friction rows of the current group, hidden from its iterations.
+    int point_friction_rows_ = 0;
 };
 
 }  // namespace rockfall::engine

@@ -96,6 +96,7 @@ class HeapRun {
           slope_(scenario_.slope),
           world_(scenario_, slope_),
           sink_(sink) {
+        world_.set_collision_threads(heap.collision_threads);
         outcome_.axis_x = 0.5 * heap.floor_size;
         outcome_.surface_z = heap.sheet ? heap.sheet->thickness : 0.0;
         std::vector<PlacedRock> placed = cluster_rocks(slope_, *scenario_.cluster, seed);

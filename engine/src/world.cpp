@@ -4,6 +4,7 @@
 #include "contact_settings.hpp"
 #include "coulomb_solver.hpp"
 #include "hull_contacts.hpp"
+#include "pair_dispatcher.hpp"
 #include "rock_world.hpp"
 #include "sheet_contacts.hpp"
 #include "terrain_contacts.hpp"
@@ -115,7 +116,7 @@ struct World::Impl {
     TerrainContactCreateFunc terrain_contacts;
     TerrainContactCreateFunc swapped_terrain_contacts;
     SheetContactCreateFunc sheet_contacts;
-    btCollisionDispatcher dispatcher{&configuration};
+    PairDispatcher dispatcher{&configuration};
     // One rock among a few dozen static boxes: the sweep-and-prune broadphase updates one
     // moving AABB per step against sorted static intervals (measured on the seed slope: the
     // dynamic AABB tree costs 6 % more per run, the brute-force broadphase 75 % more).
@@ -526,6 +527,8 @@ void World::shift_pose(int rock, const Vec3& shift, const Vec3& rotation) {
     body.setWorldTransform(transform);
     body.setInterpolationWorldTransform(transform);
 }
+
+void World::set_collision_threads(int threads) { impl_->dispatcher.set_threads(threads); }
 
 void World::step(double dt) {
     // maxSubSteps = 0: exactly one step of dt, no fixed-step accumulator, no interpolation.

@@ -90,6 +90,9 @@ class World {
     // Moves a rock by `shift` (m) and turns it by the rotation vector `rotation` (rad, world
     // frame, about its centre of mass), keeping its velocities.
     void shift_pose(int rock, const Vec3& shift, const Vec3& rotation);
+    // Threads for a step's collision detection (>= 1; 1, the default: the caller's alone). The
+    // results are bit-identical whatever the count (pair_dispatcher.hpp).
+    void set_collision_threads(int threads);
     // One step of dt seconds (stepSimulation(dt, 0): no sub-steps, no interpolation).
     void step(double dt);
 

@@ -26,7 +26,7 @@ constexpr int kChunkParticles = 64;
 
 template <typename T>
 void permute(std::vector<T>& values, std::vector<T>& scratch,
-             const std::vector<std::int32_t>& order, detail::ThreadPool& pool) {
+             const std::vector<std::int32_t>& order, shapes::ThreadPool& pool) {
     scratch.resize(values.size());
     pool.parallel_for(static_cast<int>(order.size()), kParticleGrain, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {

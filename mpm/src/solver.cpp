@@ -126,7 +126,7 @@ Solver<Dim>::Solver(const SolverSettings& settings, const Material& material,
     // Below about 512 particles per thread the fork-join overhead of a phase outweighs its
     // work; fewer threads give the same (thread-count independent) results sooner.
     threads_ = std::clamp(static_cast<int>(particles_.size()) / 512, 1, threads_);
-    work_->pool = std::make_unique<detail::ThreadPool>(threads_);
+    work_->pool = std::make_unique<shapes::ThreadPool>(threads_);
 }
 
 template <int Dim>

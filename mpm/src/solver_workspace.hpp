@@ -4,9 +4,9 @@
 
 #include "grid.hpp"
 #include "kernels.hpp"
-#include "thread_pool.hpp"
 
 #include "mpm/solver.hpp"
+#include "shapes/thread_pool.hpp"
 
 #include <array>
 #include <cstdint>
@@ -121,7 +121,7 @@ struct Solver<Dim>::Workspace {
     std::vector<int> task_count;
     // Per task of the block-key pass, its runs of equal keys.
     std::vector<std::vector<detail::KeyRun>> key_runs;
-    std::unique_ptr<detail::ThreadPool> pool;
+    std::unique_ptr<shapes::ThreadPool> pool;
 };
 
 }  // namespace rockfall::mpm

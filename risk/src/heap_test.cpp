@@ -72,6 +72,7 @@ void check_heap_spec(const HeapTestSpec& spec) {
     detail::require_positive("max_fill_time", h.max_fill_time, "s");
     detail::require_positive("max_settle_time", h.max_settle_time, "s");
     require_count("solver_iterations", h.solver_iterations, 1, 100, "");
+    require_count("collision_threads", h.collision_threads, 1, 1024, "");
     detail::require_positive("gravity", h.gravity, "m/s2");
     require_count("count", spec.count, 1, 1'000'000, "heaps");
     require_count("method.planes", spec.method.planes, 1, 360, "");
@@ -258,10 +259,14 @@ HeapTestResult summarize(std::vector<HeapMeasurement> heaps) {
 std::vector<HeapTestResult> run_tests(const HeapTestSpec& spec, const std::vector<double>& values,
                                       int threads, std::int64_t done_before, std::int64_t total,
                                       const BatchProgress& progress) {
-    std::vector<HeapTestSpec> specs(values.size(), spec);
-    for (std::size_t v = 0; v < values.size(); ++v)
-        specs[v].heap.rock.material.friction = values[v];
     const auto count = static_cast<std::int64_t>(values.size()) * spec.count;
+    // Fewer heaps than threads: the spare threads share each heap's collision detection.
+    const auto heaps_at_once = static_cast<int>(std::min<std::int64_t>(count, threads));
+    std::vector<HeapTestSpec> specs(values.size(), spec);
+    for (std::size_t v = 0; v < values.size(); ++v) {
+        specs[v].heap.rock.material.friction = values[v];
+        specs[v].heap.collision_threads = std::max(1, threads / std::max(1, heaps_at_once));
+    }
     std::vector<HeapMeasurement> heaps(static_cast<std::size_t>(count));
     run_parallel(
         count, threads,

@@ -85,6 +85,9 @@ struct HeapScenario {
     int solver_iterations = 10;
     /// Gravitational acceleration, m/s2 (> 0).
     double gravity = 9.81;
+    /// Threads for the collision detection of each step, in [1, 1024]: not physics, the
+    /// outcome is bit-identical whatever the count.
+    int collision_threads = 1;
 };
 
 /// How a heap test ended.

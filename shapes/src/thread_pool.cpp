@@ -1,8 +1,8 @@
-#include "thread_pool.hpp"
+#include "shapes/thread_pool.hpp"
 
 #include <cassert>
 
-namespace rockfall::mpm::detail {
+namespace rockfall::shapes {
 namespace {
 
 // Spin iterations before sleeping (tens of microseconds): enough to catch the next phase of a
@@ -169,4 +169,4 @@ void ThreadPool::split_by_weight(const std::vector<std::int32_t>& prefix,
     }
 }
 
-}  // namespace rockfall::mpm::detail
+}  // namespace rockfall::shapes

@@ -1,14 +1,14 @@
 // The solver's fork-join pool: every task runs exactly once per run, whatever the split, and
 // back-to-back runs never mix their tasks (a stale claim from an earlier run would show up as a
 // task run twice, or a task missed).
-#include "thread_pool.hpp"
+#include "shapes/thread_pool.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <atomic>
 #include <vector>
 
-using rockfall::mpm::detail::ThreadPool;
+using rockfall::shapes::ThreadPool;
 
 TEST_CASE("Thread pool runs every task once, whatever the split", "[mpm][pool]") {
     for (const int threads : {1, 2, 3}) {

@@ -1,13 +1,15 @@
 #pragma once
-// A small fork-join pool for the solver's phases. Each thread owns a contiguous range of a
-// phase's tasks and runs it first, then takes what is left of the other ranges. The solver
-// gives a thread the same particles and grid blocks in every phase of a step, so their data
-// stay in that core's cache instead of moving between cores at each phase; taking the others'
-// leftovers keeps the threads finishing together. The calling thread takes part like the
-// workers; it waits only for tasks a worker has claimed and not finished, never for a worker
-// that has not woken up, so a busy or oversubscribed machine degrades towards the single-thread
-// speed instead of stalling at barriers. Idle workers spin briefly, then sleep on an atomic
-// wait (a futex). Tasks must be independent: which thread runs a task never changes a result.
+// A small fork-join pool, here as the lowest library both the MPM solver and the engine's
+// collision detection use (engine/src/pair_dispatcher.hpp). Written for the MPM solver's phases.
+// Each thread owns a contiguous range of a phase's tasks and runs it first, then takes what is left
+// of the other ranges. The solver gives a thread the same particles and grid blocks in every phase
+// of a step, so their data stay in that core's cache instead of moving between cores at each phase;
+// taking the others' leftovers keeps the threads finishing together. The calling thread takes part
+// like the workers; it waits only for tasks a worker has claimed and not finished, never for a
+// worker that has not woken up, so a busy or oversubscribed machine degrades towards the
+// single-thread speed instead of stalling at barriers. Idle workers spin briefly, then sleep on an
+// atomic wait (a futex). Tasks must be independent: which thread runs a task never changes a
+// result.
 
 #include <algorithm>
 #include <atomic>
@@ -17,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-namespace rockfall::mpm::detail {
+namespace rockfall::shapes {
 
 class ThreadPool {
   public:
@@ -74,4 +76,4 @@ class ThreadPool {
     std::atomic<bool> stop_{false};
 };
 
-}  // namespace rockfall::mpm::detail
+}  // namespace rockfall::shapes
