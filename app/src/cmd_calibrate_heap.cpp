@@ -230,7 +230,9 @@ void register_heap(CLI::App& calibrate) {
                     "Vertical half-planes through the axis the outline is read in")
         ->capture_default_str()
         ->transform(integer_in(1, 360, "a number of planes"));
-    cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
+    cmd->add_option("--threads", args->threads,
+                    "Worker threads; 0 = all cores. Fewer heaps than threads: the spare threads "
+                    "share each heap's collision detection (same result)")
         ->capture_default_str()
         ->transform(integer_in(0, 1024, "a thread count"));
     cmd->add_option("--target-angle", args->target_angle,
