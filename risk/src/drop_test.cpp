@@ -302,12 +302,15 @@ RestitutionIdentification identify_surface_restitution(const DropTestSpec& spec,
         for (const DropTestResult& r : results) out.push_back(matched(r));
         return out;
     };
-    const UnreachableTarget unreachable = [&](double lo, double hi) {
+    const UnreachableTarget unreachable = [&](double lo, double hi,
+                                              const std::vector<SearchPoint>& curve) {
         std::ostringstream message;
         message << "target_cor = " << target << ": must be in [" << lo << ", " << hi
                 << "], the mean COR over surface restitution 0 to 1 for this rock (its own "
                    "restitution "
-                << spec.rock.material.restitution << " enters the contact's mean)";
+                << spec.rock.material.restitution
+                << " enters the contact's mean; surface restitution: mean COR: "
+                << curve_text(curve) << ")";
         throw std::invalid_argument(message.str());
     };
     const ParameterSearch search = search_parameter(

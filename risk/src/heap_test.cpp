@@ -321,11 +321,14 @@ FrictionIdentification identify_friction(const HeapTestSpec& spec, double target
         }
         return out;
     };
-    const UnreachableTarget unreachable = [&](double lo, double hi) {
+    const UnreachableTarget unreachable = [&](double lo, double hi,
+                                              const std::vector<SearchPoint>& curve) {
         std::ostringstream message;
         message << "target_angle = " << target_deg << " deg: must be in [" << lo << ", " << hi
                 << "] deg, the mean angle of repose over rock friction " << options.friction_min
-                << " to " << options.friction_max << " for these rocks";
+                << " to " << options.friction_max
+                << " for these rocks (friction: mean angle, deg: " << curve_text(curve)
+                << "); widen --friction-range";
         throw std::invalid_argument(message.str());
     };
     const ParameterSearch search = search_parameter(

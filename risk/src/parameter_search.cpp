@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace rockfall::risk {
@@ -49,6 +50,15 @@ std::vector<SearchPoint> all_points(const ParameterSearch& search) {
     return all;
 }
 
+std::string curve_text(const std::vector<SearchPoint>& curve) {
+    std::ostringstream text;
+    text.precision(4);
+    for (std::size_t i = 0; i < curve.size(); ++i) {
+        text << (i > 0 ? ", " : "") << curve[i].parameter << ": " << curve[i].value.mean;
+    }
+    return text.str();
+}
+
 ParameterSearch search_parameter(const std::vector<double>& curve, double target,
                                  const SearchOptions& options, const SearchEvaluator& evaluate,
                                  const UnreachableTarget& unreachable) {
@@ -72,7 +82,7 @@ ParameterSearch search_parameter(const std::vector<double>& curve, double target
             lo = std::min(lo, p.value.mean);
             hi = std::max(hi, p.value.mean);
         }
-        unreachable(lo, hi);
+        unreachable(lo, hi, search.curve);
         detail::require(false, "target out of the curve's range");
     }
     // Illinois regula falsi on the bracket [lo, hi]: the residual of an end that survives

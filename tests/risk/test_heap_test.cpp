@@ -132,8 +132,9 @@ TEST_CASE("the friction search recovers a known friction from a noisy curve", "[
         return out;
     };
     const double target = 40.0 * (1.0 - std::exp(-1.0));
-    const risk::ParameterSearch s = risk::search_parameter(
-        {0.1, 0.28, 0.46, 0.64, 0.82, 1.0}, target, {0.01, 8}, evaluate, [](double, double) {});
+    const risk::ParameterSearch s =
+        risk::search_parameter({0.1, 0.28, 0.46, 0.64, 0.82, 1.0}, target, {0.01, 8}, evaluate,
+                               [](double, double, const auto&) {});
     CHECK_THAT(s.best.parameter, Catch::Matchers::WithinAbs(0.5, 0.04));
     CHECK(s.consistent.lower <= s.best.parameter);
     CHECK(s.consistent.upper >= s.best.parameter);
@@ -146,15 +147,18 @@ TEST_CASE("the parameter search brackets and refines a monotone curve", "[heap]"
         for (double p : ps) out.push_back(risk::sample_summary({30.0 * p * p + 5.0}));
         return out;
     };
-    const risk::ParameterSearch s = risk::search_parameter({0.0, 0.3, 0.6, 0.9}, 12.5, {1e-6, 30},
-                                                           evaluate, [](double, double) {});
+    const risk::ParameterSearch s = risk::search_parameter(
+        {0.0, 0.3, 0.6, 0.9}, 12.5, {1e-6, 30}, evaluate, [](double, double, const auto&) {});
     CHECK_THAT(s.best.parameter, Catch::Matchers::WithinAbs(0.5, 1e-4));
-    CHECK_THROWS_AS(risk::search_parameter({0.0, 1.0}, 100.0, {1e-3, 5}, evaluate,
-                                           [](double lo, double hi) {
-                                               throw std::invalid_argument(
-                                                   std::to_string(lo) + " " + std::to_string(hi));
-                                           }),
-                    std::invalid_argument);
+    // Out of reach: the callback gets the range and the curve, whose text keeps the points.
+    CHECK_THROWS_WITH(risk::search_parameter(
+                          {0.0, 1.0}, 100.0, {1e-3, 5}, evaluate,
+                          [](double lo, double hi, const std::vector<risk::SearchPoint>& curve) {
+                              throw std::invalid_argument(std::to_string(lo) + " " +
+                                                          std::to_string(hi) + " (" +
+                                                          risk::curve_text(curve) + ")");
+                          }),
+                      "5.000000 35.000000 (0: 5, 1: 35)");
 }
 
 TEST_CASE("bad heap inputs name the field, value and range", "[heap]") {

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace rockfall::risk {
@@ -30,9 +31,15 @@ struct SearchPoint {
 using SearchEvaluator =
     std::function<std::vector<SampleSummary>(const std::vector<double>& parameters)>;
 
-/// Called with the lowest and highest mean output of the curve when the target lies outside
-/// them; it must throw (the caller's message names its option and the range).
-using UnreachableTarget = std::function<void(double lowest, double highest)>;
+/// Called with the lowest and highest mean output of the curve, and the curve, when the target
+/// lies outside them; it must throw (the caller's message names its option and the range, and
+/// gives the curve: curve_text).
+using UnreachableTarget =
+    std::function<void(double lowest, double highest, const std::vector<SearchPoint>& curve)>;
+
+/// The curve as "parameter: mean" pairs, "0.15: 14.1, 0.3: 17.2, ..." (4 significant digits),
+/// so that a message about an unreachable target keeps what the curve cost to measure.
+std::string curve_text(const std::vector<SearchPoint>& curve);
 
 /// Settings of a search.
 struct SearchOptions {
