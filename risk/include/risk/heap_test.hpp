@@ -155,7 +155,9 @@ struct HeapTestResult {
 };
 
 /// Runs the `spec.count` heaps of a checked spec on `threads` (>= 1) worker threads; heap i's
-/// result depends only on (spec, i), whatever the thread count.
+/// result depends only on (spec, i), whatever the thread count. With fewer heaps than threads,
+/// each heap's collision detection gets threads / heaps of them (spec.heap.collision_threads
+/// is replaced; identify_friction does the same per batch).
 HeapTestResult run_heap_test(const HeapTestSpec& spec, int threads,
                              const BatchProgress& progress = {});
 
