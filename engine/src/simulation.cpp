@@ -112,6 +112,8 @@ Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options
       rigid_resting_(options.rigid_resting_wall) {
     assert(!scenario.rocks.empty() || scenario.cluster);
     assert(options.trajectory_interval > 0.0);
+    assert(options.collision_threads >= 1);
+    world_.set_collision_threads(options.collision_threads);
     Random random(seed);
     std::vector<PlacedRock> placed;
     for (const RockRelease& spec : scenario.rocks) {
