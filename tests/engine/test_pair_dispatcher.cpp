@@ -4,9 +4,10 @@
 // floor or on the perforated sheet), and a cluster down seed 001's lined flume (the sphere
 // layer's compound tiles, the sheet, the wall) end bit for bit as on one thread.
 
+#include "flume_cluster.hpp"
+
 #include "engine/heap_test.hpp"
 #include "engine/simulation.hpp"
-#include "shapes/grading.hpp"
 #include "shapes/lining.hpp"
 
 #include <catch2/catch.hpp>
@@ -76,27 +77,12 @@ TEST_CASE("collision detection on several threads gives the one-thread heap bit 
 TEST_CASE("a cluster down the lined flume is the same on one thread and on two", "[verification]") {
     // Seed 001's flume at 45 deg, the sphere layer on the incline and the sheet on the run-out,
     // 40 blocky rocks of C2's grading; 1.2 s of flow reaches the wall.
-    engine::Scenario scenario;
-    scenario.slope.segments = {{1.82, 45.0}, {1.82, 0.0}};
-    scenario.slope.width = 0.6;
-    scenario.slope.bars.enabled = false;
-    scenario.slope.bars.segments.clear();
-    scenario.slope.side_walls.height = 0.3;
-    scenario.slope.side_walls.thickness = 0.01;
-    scenario.slope.wall.distance_from_toe = 0.5;
-    scenario.slope.wall.height = 0.3;
+    engine::Scenario scenario = engine::test::flume_cluster(40);
     shapes::Lining lining;
     lining.spheres = shapes::SphereLayer{};
     lining.sheet = shapes::PerforatedSheet{};
     lining.sheet->segments = {1};
     scenario.slope.lining = std::make_shared<const shapes::Lining>(lining);
-    scenario.rocks.clear();
-    engine::Cluster cluster;
-    cluster.grading = shapes::seed001_c2();
-    cluster.grading.count = 40;
-    cluster.rock.kind = shapes::RockKind::massive;
-    cluster.rock.density = 2620.0;
-    scenario.cluster = cluster;
     scenario.numerics.max_time = 1.2;
     const engine::Outcome one = engine::simulate(scenario, 3);
     engine::RunOptions two_threads;
