@@ -24,11 +24,6 @@ thread_local PairContext t_context;
 
 }  // namespace
 
-// The pool, a separate class so that the header needs no thread-pool include.
-class PairWorkers : public shapes::ThreadPool {
-    using shapes::ThreadPool::ThreadPool;
-};
-
 PairDispatcher::PairDispatcher(btCollisionConfiguration* configuration)
     : btCollisionDispatcher(configuration) {}
 
@@ -37,7 +32,7 @@ PairDispatcher::~PairDispatcher() = default;
 void PairDispatcher::set_threads(int threads) {
     assert(threads >= 1);
     if (threads == this->threads()) return;
-    workers_ = threads > 1 ? std::make_unique<PairWorkers>(threads) : nullptr;
+    workers_ = threads > 1 ? std::make_unique<shapes::ThreadPool>(threads) : nullptr;
 }
 
 int PairDispatcher::threads() const { return workers_ ? workers_->size() : 1; }
@@ -55,8 +50,7 @@ void PairDispatcher::dispatchAllCollisionPairs(btOverlappingPairCache* pairs,
     // pair callback never removes a pair); so do the tasks, each on its own pairs.
     btBroadphasePair* pair = pairs->getOverlappingPairArrayPtr();
     const btNearCallback near_callback = getNearCallback();
-    before_.clear();
-    for (int i = 0; i < m_manifoldsPtr.size(); ++i) before_.push_back(m_manifoldsPtr[i]);
+    manifolds_before_ = m_manifoldsPtr.size();
     events_.clear();
     concurrent_ = true;
     workers_->parallel_for(count, kPairsPerTask, [&](int begin, int end) {
@@ -73,7 +67,8 @@ btPersistentManifold* PairDispatcher::getNewManifold(const btCollisionObject* bo
                                                      const btCollisionObject* body1) {
     if (!concurrent_) return btCollisionDispatcher::getNewManifold(body0, body1);
     const std::lock_guard<std::mutex> lock(mutex_);
-    // Bullet's own creation (pool, thresholds); its place in the array is redone by the replay.
+    // Bullet's own creation (pool, thresholds), appended to the array after the manifolds that
+    // were there before the pairs; the replay redoes its place.
     btPersistentManifold* manifold = btCollisionDispatcher::getNewManifold(body0, body1);
     events_.push_back({t_context.pair, t_context.sequence++, true, manifold});
     return manifold;
@@ -90,23 +85,20 @@ void PairDispatcher::releaseManifold(btPersistentManifold* manifold) {
     events_.push_back({t_context.pair, t_context.sequence++, false, manifold});
 }
 
+// The algorithm pool is locked always: uncontended outside the concurrent pairs, and rare.
 void* PairDispatcher::allocateCollisionAlgorithm(int size) {
-    if (!concurrent_) return btCollisionDispatcher::allocateCollisionAlgorithm(size);
     const std::lock_guard<std::mutex> lock(mutex_);
     return btCollisionDispatcher::allocateCollisionAlgorithm(size);
 }
 
 void PairDispatcher::freeCollisionAlgorithm(void* memory) {
-    if (!concurrent_) {
-        btCollisionDispatcher::freeCollisionAlgorithm(memory);
-        return;
-    }
     const std::lock_guard<std::mutex> lock(mutex_);
     btCollisionDispatcher::freeCollisionAlgorithm(memory);
 }
 
-// The manifold array as the serial dispatch leaves it: the array before the pairs, then each
-// pair's events in pair order, a creation appended at the end, a release swapped with the
+// The manifold array as the serial dispatch leaves it: the array before the pairs (its first
+// manifolds_before_ entries, untouched: creations only appended and releases were deferred),
+// then each pair's events in pair order, a creation appended at the end, a release swapped with the
 // last manifold and removed (Bullet's btCollisionDispatcher::getNewManifold and
 // releaseManifold). A released manifold stays allocated until here, so no later creation
 // reuses its address during the pairs.
@@ -114,8 +106,7 @@ void PairDispatcher::replay_events() {
     std::sort(events_.begin(), events_.end(), [](const Event& a, const Event& b) {
         return std::tie(a.pair, a.sequence) < std::tie(b.pair, b.sequence);
     });
-    m_manifoldsPtr.resize(0);
-    for (btPersistentManifold* manifold : before_) m_manifoldsPtr.push_back(manifold);
+    m_manifoldsPtr.resize(manifolds_before_);
     std::vector<btPersistentManifold*> released;
     for (const Event& event : events_) {
         btPersistentManifold* manifold = event.manifold;

@@ -19,9 +19,11 @@
 #include <mutex>
 #include <vector>
 
-namespace rockfall::engine {
+namespace rockfall::shapes {
+class ThreadPool;
+}
 
-class PairWorkers;
+namespace rockfall::engine {
 
 class PairDispatcher : public btCollisionDispatcher {
   public:
@@ -53,11 +55,11 @@ class PairDispatcher : public btCollisionDispatcher {
 
     void replay_events();
 
-    std::unique_ptr<PairWorkers> workers_;
+    std::unique_ptr<shapes::ThreadPool> workers_;
     bool concurrent_ = false;  // true while the pairs run on several threads
-    std::mutex mutex_;         // the pools and the event log, while concurrent_
+    std::mutex mutex_;         // the pools, and the event log while concurrent_
     std::vector<Event> events_;
-    std::vector<btPersistentManifold*> before_;  // the manifold array when the pairs started
+    int manifolds_before_ = 0;  // manifolds in the array when the pairs started
 };
 
 }  // namespace rockfall::engine
