@@ -43,6 +43,7 @@ db::SoilRunRecord make_soil_record(const scenario::SoilFile& file, const mpm::So
         {"cfl", s.numerics.cfl},
         {"align_grid", s.numerics.align_grid},
         {"boundary_reach", s.numerics.boundary_reach},
+        {"volumetric_averaging", s.numerics.volumetric_averaging},
         {"wall_support",
          s.boundaries.wall_support == mpm::WallSupport::spring ? "spring" : "rigid"},
         {"wall_facing_mass_kg_m2", s.boundaries.wall_facing_mass},

@@ -37,6 +37,23 @@ inline int stencil_base(double cells) {
     return static_cast<int>(cells - 0.5);
 }
 
+// The dual cell of a particle within its particle block, 0 .. 2^Dim - 1: bit d set when its
+// stencil starts at the block's second base node along axis d.
+template <int Dim>
+inline int dual_cell(const KernelFrame<Dim>& frame, const IVec<Dim>& first_node,
+                     const Vec<Dim>& x) {
+    // The same arithmetic as the binning and the stencil (times 1 / h, not divided by h), so
+    // that a particle on a cell boundary falls on the same side in all three.
+    const double inverse_h = 1.0 / frame.h;
+    int cell = 0;
+    for (int d = 0; d < Dim; ++d) {
+        const int base = stencil_base((x[d] - frame.origin[d]) * inverse_h);
+        assert(base - first_node[d] == 0 || base - first_node[d] == 1);
+        cell |= (base - first_node[d]) << d;
+    }
+    return cell;
+}
+
 template <int Dim>
 struct Stencil {
     int base[Dim];

@@ -299,6 +299,7 @@ SoilModel<Dim> build_soil_model(const SoilScenario& scenario) {
     }
     settings.domain_max = hi + Vec3::Constant(3.0 * h);
     settings.boundary_reach = scenario.numerics.boundary_reach;
+    settings.volumetric_averaging = scenario.numerics.volumetric_averaging;
     settings.cfl = scenario.numerics.cfl;
     settings.threads = scenario.numerics.threads;
     settings.max_time_step = scenario.output.sample_interval;

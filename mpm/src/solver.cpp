@@ -368,11 +368,14 @@ void Solver<Dim>::update_spring(double dt) {
 namespace {
 
 // Phase 5 for particle p (update-stress-last): sigma co-rotated with the spin W = skew(C_p)
-// (Jaumann rate), then the constitutive model with the strain increment sym(C_p) dt;
-// V_p *= det(I + dt C_p). Returns the particle's new density, kg/m3.
+// (Jaumann rate), then the constitutive model with the strain increment sym(L) dt, L = C_p
+// with its trace replaced by `trace` (C_p's own, or its dual cell's average);
+// V_p *= det(I + dt L). Returns the particle's new density, kg/m3.
 template <int Dim, typename Model>
-double update_stress(Particles<Dim>& particles, std::size_t p, const Model& model, double dt) {
-    const Mat<Dim>& c = particles.affine[p];
+double update_stress(Particles<Dim>& particles, std::size_t p, const Model& model, double dt,
+                     double trace) {
+    Mat<Dim> c = particles.affine[p];
+    c.diagonal().array() += (trace - c.trace()) / Dim;
     const Mat3 l = embed<Dim>(c);
     const Mat3 strain_increment = (0.5 * dt) * (l + l.transpose());
     const Mat3 rotated = detail::corotate(particles.stress[p], l, dt);
@@ -398,6 +401,11 @@ void Solver<Dim>::grid_to_particles(double dt) {
     const double damping = 1.0 / (1.0 + settings_.damping * dt);
     w.task_max.assign(static_cast<std::size_t>(count), 0.0);
     w.task_density.assign(static_cast<std::size_t>(count), 0.0);
+    const bool averaging = settings_.volumetric_averaging;
+    if (averaging) {
+        w.particle_trace.resize(particles_.size());
+        w.particle_cell.resize(particles_.size());
+    }
     std::visit(
         [&](const auto& params) {
             using Params = std::decay_t<decltype(params)>;
@@ -413,6 +421,10 @@ void Solver<Dim>::grid_to_particles(double dt) {
                 detail::gather_local_nodes<Dim>(grid.data, pb.first_node, pb.slots, local);
                 for (int k = chunk.begin; k < chunk.end; ++k) {
                     const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
+                    if (averaging) {
+                        w.particle_cell[p] = static_cast<std::int8_t>(
+                            detail::dual_cell<Dim>(frame, pb.first_node, particles_.position[p]));
+                    }
                     detail::gather_particle<Dim>(frame, pb.first_node, local,
                                                  particles_.position[p], particles_.velocity[p],
                                                  particles_.affine[p]);
@@ -420,10 +432,31 @@ void Solver<Dim>::grid_to_particles(double dt) {
                     particles_.velocity[p] *= damping;
                     max_speed_squared =
                         std::max(max_speed_squared, particles_.velocity[p].squaredNorm());
-                    max_density = std::max(max_density, update_stress(particles_, p, model, dt));
+                    if (averaging) {
+                        w.particle_trace[p] = particles_.affine[p].trace();
+                    } else {
+                        max_density = std::max(
+                            max_density,
+                            update_stress(particles_, p, model, dt, particles_.affine[p].trace()));
+                    }
                 }
                 w.task_max[static_cast<std::size_t>(i)] = max_speed_squared;
                 w.task_density[static_cast<std::size_t>(i)] = max_density;
+            });
+            if (!averaging) return;
+            // Per particle block: its dual cells' mean rates, then its particles' stresses.
+            w.block_density.assign(w.blocks.size(), 0.0);
+            w.pool->run(w.block_split, [&](int i) {
+                const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(i)];
+                const auto means = dual_cell_means(pb.begin, pb.end);
+                double max_density = 0.0;
+                for (int k = pb.begin; k < pb.end; ++k) {
+                    const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
+                    const double trace = means[static_cast<std::size_t>(w.particle_cell[p])];
+                    max_density =
+                        std::max(max_density, update_stress(particles_, p, model, dt, trace));
+                }
+                w.block_density[static_cast<std::size_t>(i)] = max_density;
             });
         },
         material_);
@@ -436,6 +469,31 @@ void Solver<Dim>::grid_to_particles(double dt) {
     for (const double m : w.task_density) {
         max_density_ = std::max(max_density_, m);
     }
+    if (averaging) {
+        for (const double m : w.block_density) {
+            max_density_ = std::max(max_density_, m);
+        }
+    }
+}
+
+// Volumetric averaging: the volume-weighted mean trace of C over each of the 2^Dim dual cells
+// of the particle block holding the sorted particles [begin, end) (its particles lie in the sorted
+// order together and are summed in that order, so the result is thread-count independent).
+template <int Dim>
+std::array<double, 1 << Dim> Solver<Dim>::dual_cell_means(int begin, int end) const {
+    const Workspace& w = *work_;
+    std::array<double, 1 << Dim> sum{};
+    std::array<double, 1 << Dim> weight{};
+    for (int k = begin; k < end; ++k) {
+        const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
+        const auto cell = static_cast<std::size_t>(w.particle_cell[p]);
+        sum[cell] += particles_.volume[p] * w.particle_trace[p];
+        weight[cell] += particles_.volume[p];
+    }
+    for (std::size_t c = 0; c < sum.size(); ++c) {
+        if (weight[c] > 0.0) sum[c] /= weight[c];
+    }
+    return sum;
 }
 
 template class Solver<2>;

@@ -127,7 +127,8 @@ ElasticBar elastic_bar(double cell_size) {
     return bar;
 }
 
-ColumnForces column_at_rest(double nu, double cell, double width, double offset, double reach) {
+ColumnForces column_at_rest(double nu, double cell, double width, double offset, double reach,
+                            bool averaging) {
     const double height = 2.0;
     const double density = 2000.0;
     Particles<2> column;
@@ -137,6 +138,7 @@ ColumnForces column_at_rest(double nu, double cell, double width, double offset,
     s.threads = 1;
     s.cell_size = cell;
     s.boundary_reach = reach;
+    s.volumetric_averaging = averaging;
     s.domain_min = Vec3(-offset, 0.0, -offset);
     s.domain_max = Vec3(width + 0.5, 0.0, height + 0.5);
     s.damping = 60.0;

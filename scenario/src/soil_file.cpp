@@ -68,13 +68,14 @@ inline constexpr std::array<detail::EnumName<mpm::WallSupport>, 2> wall_support_
     {"spring", mpm::WallSupport::spring},
 }};
 
-inline const Fields<mpm::SoilNumerics, 7> soil_numerics_fields{{
+inline const Fields<mpm::SoilNumerics, 8> soil_numerics_fields{{
     {"dimension", &mpm::SoilNumerics::dimension, "", detail::closed(2, 3)},
     {"cell_size", &mpm::SoilNumerics::cell_size, "m", detail::positive()},
     {"particles_per_cell", &mpm::SoilNumerics::particles_per_cell, "", detail::closed(1, 8)},
     {"cfl", &mpm::SoilNumerics::cfl, "", Range{0.0, 1.0, true, false}},
     {"align_grid", &mpm::SoilNumerics::align_grid, "", {}},
     {"boundary_reach", &mpm::SoilNumerics::boundary_reach, "", detail::closed(0.0, 0.5)},
+    {"volumetric_averaging", &mpm::SoilNumerics::volumetric_averaging, "", {}},
     {"threads", &mpm::SoilNumerics::threads, "", detail::non_negative()},
 }};
 

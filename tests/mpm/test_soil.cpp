@@ -1,3 +1,5 @@
+#include "helpers.hpp"
+
 #include "mpm/soil.hpp"
 #include "mpm/vtk.hpp"
 #include "shapes/slope.hpp"
@@ -19,14 +21,7 @@ using Catch::Matchers::WithinRel;
 namespace {
 
 // The seed flow in 2D with the wall 0.5 m past the toe, so that the soil reaches it.
-SoilScenario quick_2d() {
-    SoilScenario s;
-    s.numerics.dimension = 2;
-    s.numerics.threads = 1;
-    s.slope.wall.distance_from_toe = 0.5;
-    s.output.duration = 5.0;
-    return s;
-}
+SoilScenario quick_2d() { return test::quick_2d(0.2); }
 
 }  // namespace
 

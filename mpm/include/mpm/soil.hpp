@@ -97,6 +97,10 @@ struct SoilNumerics {
     /// and with align_grid false the wall) acts up to one cell behind its true place; 0.5: the
     /// node layer nearest the surface, within h/2 of it.
     double boundary_reach = 0.0;
+    /// Volumetric strain rate averaged over each dual cell before the stress update, against
+    /// volumetric locking (SolverSettings::volumetric_averaging). true (default); false: the
+    /// solver before 2026-12-04.
+    bool volumetric_averaging = true;
     /// Worker threads (>= 0; 0 = all available).
     int threads = 0;
 };

@@ -71,6 +71,15 @@ struct SolverSettings {
     int threads = 0;
     /// Steps between physical reorderings of the particle arrays by grid block (>= 1).
     int reorder_interval = 16;
+    /// true (default): the volumetric strain rate tr(C_p) of every particle is replaced by the
+    /// volume-weighted mean over its dual cell (the h-wide box centred on a grid node, holding
+    /// the particles whose stencil starts one node below it) before the stress and volume
+    /// update; the deviatoric rate and the spin stay the particle's own. This is the
+    /// cell-averaged (B-bar/F-bar) treatment of volumetric locking of Coombs et al. (2018),
+    /// in rate form. false: each particle's own rate (the solver before 2026-12-04; a plastic
+    /// flow at zero dilatancy then locks, and the seed flow's static wall load rose about 10 %
+    /// per halving of the cell, docs/soil.md).
+    bool volumetric_averaging = true;
 };
 
 /// One zero vector per boundary group (Eigen vectors are not zeroed by default).
@@ -151,6 +160,7 @@ class Solver {
     void update_grid(double dt);
     void update_spring(double dt);
     void grid_to_particles(double dt);
+    std::array<double, 1 << Dim> dual_cell_means(int begin, int end) const;
     void reorder_particles();
 
     SolverSettings settings_;

@@ -61,9 +61,9 @@ struct ColumnForces {
 /// The column `width` (m) wide with walls at x = 0 and x = width, base at z = 0, Poisson ratio
 /// `nu`, cell `cell` (m); the grid's first node `offset` m below and left of the column's
 /// corner (a multiple of the cell puts nodes on the walls); SolverSettings::boundary_reach
-/// `reach`.
-ColumnForces column_at_rest(double nu, double cell, double width, double offset,
-                            double reach = 0.0);
+/// `reach` and volumetric_averaging `averaging`.
+ColumnForces column_at_rest(double nu, double cell, double width, double offset, double reach = 0.0,
+                            bool averaging = true);
 
 /// Runout (L_inf - L0) / L0 of a granular column of aspect a = H0 / L0 by the fits of Lube et
 /// al. 2005 (1.2 a below 1.8, 1.9 a^(2/3) above 2.8, the larger between) and of Lajeunesse et

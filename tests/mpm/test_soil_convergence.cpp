@@ -1,0 +1,44 @@
+// The seed flow in 2D (samples/soil/quick_2d.toml's set-up: scenario C along the slope's centre
+// line, wall 0.5 m past the toe, 5 s) at 0.05 and 0.025 m cells: the static wall load of the
+// deposit (mean over the last second; the soil is at rest from about 4 s) converges with
+// volumetric averaging and rises with each particle's own volumetric rate, the volumetric
+// locking of a perfectly plastic flow at zero dilatancy (docs/soil.md, Refinement study).
+// Measured 2026-12-04: averaged 5.08 / 5.28 / 5.23 kN/m at 0.05 / 0.025 / 0.0125 m; own rates
+// 4.51 / 5.05 / 5.57 kN/m.
+#include "helpers.hpp"
+
+#include "mpm/refine.hpp"
+#include "mpm/soil.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace rockfall::mpm;
+
+namespace {
+
+double steady_load(double cell, bool averaging) {
+    SoilScenario s = test::quick_2d(cell, 2);
+    s.numerics.volumetric_averaging = averaging;
+    const SoilOutcome o = run_soil(s);
+    REQUIRE(o.status == SoilStatus::completed);
+    return refinement_level(o, cell, 1.0).steady_wall_force;
+}
+
+}  // namespace
+
+TEST_CASE("Soil 2D: the steady wall load converges with volumetric averaging",
+          "[mpm][soil][verification]") {
+    const double coarse = steady_load(0.05, true);
+    const double fine = steady_load(0.025, true);
+    const double coarse_own = steady_load(0.05, false);
+    const double fine_own = steady_load(0.025, false);
+    WARN("steady wall load, 0.05 / 0.025 m: averaged "
+         << coarse << " / " << fine << " N/m, own rates " << coarse_own << " / " << fine_own
+         << " N/m");
+    // The 2D target: under 5 % between the two finest levels.
+    CHECK(std::abs(fine / coarse - 1.0) < 0.05);
+    // The locking it removes: more than 10 % per halving.
+    CHECK(fine_own / coarse_own - 1.0 > 0.10);
+}
