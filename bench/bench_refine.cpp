@@ -29,8 +29,12 @@ int main(int argc, char** argv) {
     for (int i = 3; i < argc; ++i) {
         settings.cell_sizes.push_back(std::atof(argv[i]));
     }
-    report::RefinementContext context{
-        argv[1], scenario.numerics.dimension, scenario.output.duration, settings.steady_window, {}};
+    report::RefinementContext context{argv[1],
+                                      scenario.numerics.dimension,
+                                      scenario.output.duration,
+                                      settings.steady_window,
+                                      scenario.output.filter_window,
+                                      {}};
     const int count = static_cast<int>(settings.cell_sizes.size());
     auto start = std::chrono::steady_clock::now();
     const mpm::RefinementStudy study =

@@ -163,7 +163,8 @@ void run_refinement_command(const SoilArgs& args) {
         settings.steady_window = std::min(settings.steady_window, duration);
     }
     report::RefinementContext context{
-        args.scenario, file.scenario.numerics.dimension, duration, settings.steady_window, {}};
+        args.scenario,          file.scenario.numerics.dimension,   duration,
+        settings.steady_window, file.scenario.output.filter_window, {}};
     const int count = static_cast<int>(settings.cell_sizes.size());
     std::fprintf(stderr, "refinement study: %d levels of %g s of flow each\n", count, duration);
     auto start = std::chrono::steady_clock::now();

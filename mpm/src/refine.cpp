@@ -66,6 +66,7 @@ RefinementLevel refinement_level(const SoilOutcome& o, double cell_size, double 
     level.status = o.status;
     level.peak_wall_force = o.peak_wall_force;
     level.peak_time = o.peak_wall_force_time;
+    level.peak_wall_force_filtered = o.peak_wall_force_filtered;
     level.runout_past_toe = o.deposit.runout_past_toe;
     if (!o.sample_time.empty()) {
         const double from = o.sample_time.back() - steady_window;
@@ -97,6 +98,8 @@ void extrapolate_study(RefinementStudy& study) {
     study.peak_wall_force =
         extrapolate(study.levels, study.ratio, &RefinementLevel::peak_wall_force);
     study.peak_time = extrapolate(study.levels, study.ratio, &RefinementLevel::peak_time);
+    study.peak_wall_force_filtered =
+        extrapolate(study.levels, study.ratio, &RefinementLevel::peak_wall_force_filtered);
     study.steady_wall_force =
         extrapolate(study.levels, study.ratio, &RefinementLevel::steady_wall_force);
     study.runout_past_toe =

@@ -33,6 +33,8 @@ std::vector<Quantity> quantities(int dimension) {
         {"peak wall load", u.text, u.key("peak_wall_force_N"), 1e-3,
          &mpm::RefinementStudy::peak_wall_force},
         {"time of peak", "s", "peak_time_s", 1.0, &mpm::RefinementStudy::peak_time},
+        {"filtered peak", u.text, u.key("peak_wall_force_filtered_N"), 1e-3,
+         &mpm::RefinementStudy::peak_wall_force_filtered},
         {"steady wall load", u.text, u.key("steady_wall_force_N"), 1e-3,
          &mpm::RefinementStudy::steady_wall_force},
         {"runout past toe", "m", "runout_past_toe_m", 1.0, &mpm::RefinementStudy::runout_past_toe},
@@ -64,18 +66,21 @@ void print_refinement(std::ostream& out, const mpm::RefinementStudy& study,
     out << "refinement study of " << context.scenario << ": "
         << (u.per_metre ? "2D plane strain, loads per metre of width" : "3D") << ", "
         << fmt("%g s", context.duration) << " of flow; steady load = mean over the last "
-        << fmt("%g s", context.steady_window) << '\n';
+        << fmt("%g s", context.steady_window) << "; peak = largest mean over a sample interval, "
+        << "filtered = largest centred moving average over " << fmt("%g s", context.filter_window)
+        << '\n';
     const std::string load = std::string("(") + u.text + ")";
     char line[256];
-    std::snprintf(line, sizeof line, "%10s %9s %8s %12s %10s %13s %10s", "cell (m)", "particles",
-                  "steps", ("peak " + load).c_str(), "t peak (s)", ("steady " + load).c_str(),
-                  "runout (m)");
+    std::snprintf(line, sizeof line, "%10s %9s %8s %12s %10s %16s %13s %10s", "cell (m)",
+                  "particles", "steps", ("peak " + load).c_str(), "t peak (s)",
+                  ("filtered " + load).c_str(), ("steady " + load).c_str(), "runout (m)");
     out << line << (timed ? "    run (s)" : "") << '\n';
     for (std::size_t i = 0; i < study.levels.size(); ++i) {
         const mpm::RefinementLevel& l = study.levels[i];
-        std::snprintf(line, sizeof line, "%10.4f %9ld %8ld %12.3f %10.3f %13.3f %10.3f",
+        std::snprintf(line, sizeof line, "%10.4f %9ld %8ld %12.3f %10.3f %16.3f %13.3f %10.3f",
                       l.cell_size, l.particles, l.steps, 1e-3 * l.peak_wall_force, l.peak_time,
-                      1e-3 * l.steady_wall_force, l.runout_past_toe);
+                      1e-3 * l.peak_wall_force_filtered, 1e-3 * l.steady_wall_force,
+                      l.runout_past_toe);
         out << line << (timed ? fmt(" %10.1f", context.runtime[i]) : "") << status_note(l) << '\n';
     }
     if (!study.extrapolated) {
@@ -117,6 +122,7 @@ nlohmann::ordered_json refinement_json(const mpm::RefinementStudy& study,
             {"status", mpm::status_name(l.status)},
             {u.key("peak_wall_force_N"), l.peak_wall_force},
             {"peak_time_s", l.peak_time},
+            {u.key("peak_wall_force_filtered_N"), l.peak_wall_force_filtered},
             {u.key("steady_wall_force_N"), l.steady_wall_force},
             {"runout_past_toe_m", l.runout_past_toe},
         };
@@ -138,9 +144,13 @@ nlohmann::ordered_json refinement_json(const mpm::RefinementStudy& study,
         }
     }
     return {
-        {"scenario_file", context.scenario},         {"dimension", context.dimension},
-        {"per_metre_of_width", u.per_metre},         {"duration_s", context.duration},
-        {"steady_window_s", context.steady_window},  {"levels", std::move(levels)},
+        {"scenario_file", context.scenario},
+        {"dimension", context.dimension},
+        {"per_metre_of_width", u.per_metre},
+        {"duration_s", context.duration},
+        {"steady_window_s", context.steady_window},
+        {"filter_window_s", context.filter_window},
+        {"levels", std::move(levels)},
         {"extrapolation", std::move(extrapolation)},
     };
 }

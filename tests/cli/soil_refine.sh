@@ -21,7 +21,7 @@ study=$(cat "$work/study.json")
 # The finest level against a single run at 0.05 m cells: the same scenario, the same loads.
 printf 'extends = "%s"\n[numerics]\ncell_size = 0.05\n' "$quick" >"$work/fine.toml"
 single=$("$rockfall" soil "$work/fine.toml" --json)
-for key in peak_wall_force_N_per_m runout_past_toe_m; do
+for key in peak_wall_force_N_per_m peak_wall_force_filtered_N_per_m runout_past_toe_m; do
     a=$(value "$study" "$key" 3) b=$(value "$single" "$key")
     close "$a" "$b" 1e-9 || { echo "level 3 $key = $a but the single run gives $b"; exit 1; }
 done
@@ -39,15 +39,15 @@ close "$extrapolated" "${want#* }" 1e-9 ||
 
 # The text table: units on the columns and one of the two verdicts per quantity.
 text=$("$rockfall" soil "$quick" --refine 0.2,0.1,0.05 2>/dev/null)
-grep -Eq 'peak \(kN/m\) +t peak \(s\) +steady \(kN/m\) +runout \(m\)' <<<"$text" ||
+grep -Eq 'peak \(kN/m\) +t peak \(s\) +filtered \(kN/m\) +steady \(kN/m\) +runout \(m\)' <<<"$text" ||
     { echo "no 2D table header:"; echo "$text"; exit 1; }
-[ "$(grep -Ec '^  (peak wall load|time of peak|steady wall load|runout past toe) +([0-9.]+ (kN/m|s|m), observed order|not converging monotonically)' <<<"$text")" -eq 4 ] ||
-    { echo "expected 4 extrapolation lines:"; echo "$text"; exit 1; }
+[ "$(grep -Ec '^  (peak wall load|time of peak|filtered peak|steady wall load|runout past toe) +([0-9.]+ (kN/m|s|m), observed order|not converging monotonically)' <<<"$text")" -eq 5 ] ||
+    { echo "expected 5 extrapolation lines:"; echo "$text"; exit 1; }
 
 # 3D: a short flow at coarse cells, loads in kN.
 printf 'extends = "%s"\n[output]\nduration = 0.3\n' "$seed" >"$work/short_3d.toml"
 text=$("$rockfall" soil "$work/short_3d.toml" --refine 0.4,0.3,0.2 --steady-window 0.1 2>/dev/null)
 grep -q '3D, 0.3 s of flow; steady load = mean over the last 0.1 s' <<<"$text" &&
-    grep -Eq 'peak \(kN\) +t peak \(s\) +steady \(kN\) +runout \(m\)' <<<"$text" ||
+    grep -Eq 'peak \(kN\) +t peak \(s\) +filtered \(kN\) +steady \(kN\) +runout \(m\)' <<<"$text" ||
     { echo "no 3D table:"; echo "$text"; exit 1; }
 echo "ok: soil --refine"

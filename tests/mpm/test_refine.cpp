@@ -60,6 +60,7 @@ TEST_CASE("Refinement level: steady load is the mean over the last window", "[mp
     o.particles = 10;
     o.peak_wall_force = 5.0;
     o.peak_wall_force_time = 0.2;
+    o.peak_wall_force_filtered = 4.5;
     for (int k = 1; k <= 10; ++k) {
         o.sample_time.push_back(0.1 * k);
         o.wall_force.push_back(k <= 6 ? 5.0 : 2.0);
@@ -68,6 +69,7 @@ TEST_CASE("Refinement level: steady load is the mean over the last window", "[mp
     CHECK_THAT(level.steady_wall_force, WithinRel(2.0, 1e-12));
     CHECK(level.peak_wall_force == 5.0);
     CHECK(level.peak_time == 0.2);
+    CHECK(level.peak_wall_force_filtered == 4.5);
 }
 
 TEST_CASE("Refinement study: no extrapolation when a fine level did not complete",
@@ -78,6 +80,7 @@ TEST_CASE("Refinement study: no extrapolation when a fine level did not complete
         l.cell_size = h;
         l.peak_wall_force = 10.0 - 8.0 * h;  // first order, limit 10
         l.peak_time = 3.0;
+        l.peak_wall_force_filtered = 8.0 - 16.0 * h * h;  // second order, limit 8
         l.steady_wall_force = 5.0 - 4.0 * h;
         l.runout_past_toe = 0.5 - h;
         study.levels.push_back(l);
@@ -87,6 +90,8 @@ TEST_CASE("Refinement study: no extrapolation when a fine level did not complete
     CHECK_THAT(study.ratio, WithinRel(2.0, 1e-12));
     CHECK_THAT(study.peak_wall_force.extrapolated, WithinRel(10.0, 1e-9));
     CHECK_THAT(study.peak_wall_force.order, WithinRel(1.0, 1e-9));
+    CHECK_THAT(study.peak_wall_force_filtered.extrapolated, WithinRel(8.0, 1e-9));
+    CHECK_THAT(study.peak_wall_force_filtered.order, WithinRel(2.0, 1e-9));
     // A non-finite finest level (its values NaN) leaves the study without extrapolation.
     study.levels.back().status = SoilStatus::non_finite;
     study.levels.back().peak_wall_force = std::nan("");

@@ -47,6 +47,8 @@ struct RefinementLevel {
     double peak_wall_force = 0.0;
     /// Time of the peak, s.
     double peak_time = 0.0;
+    /// Peak of the filtered wall load (output.filter_window's centred moving average), N (N/m).
+    double peak_wall_force_filtered = 0.0;
     /// Steady wall load: mean of the sampled load over the last steady_window seconds, N (N/m).
     double steady_wall_force = 0.0;
     /// Runout past the toe, m.
@@ -73,9 +75,10 @@ struct RefinementStudy {
     bool extrapolated = false;
     /// Refinement ratio used for the extrapolation (geometric mean of the three finest).
     double ratio = 0.0;
-    /// Extrapolations of peak, time of peak, steady load and runout.
+    /// Extrapolations of peak, time of peak, filtered peak, steady load and runout.
     RichardsonEstimate peak_wall_force;
     RichardsonEstimate peak_time;
+    RichardsonEstimate peak_wall_force_filtered;
     RichardsonEstimate steady_wall_force;
     RichardsonEstimate runout_past_toe;
 };

@@ -24,6 +24,8 @@ struct RefinementContext {
     double duration = 0.0;
     /// Window of the steady load at the end of each run, s.
     double steady_window = 0.0;
+    /// Width of the moving average of the filtered peak (output.filter_window), s.
+    double filter_window = 0.0;
     /// Wall-clock time of each level, s; empty to leave the column out.
     std::vector<double> runtime;
 };
