@@ -23,6 +23,7 @@ struct EnvelopeArgs {
     risk::EnvelopeFormula formula;
     std::string velocity = "normal";
     double min_velocity = 0.0;
+    bool first_hits = false;
     int worst = 10;
     double confidence = 0.95;
     bool json = false;
@@ -44,6 +45,7 @@ void run(const EnvelopeArgs& args) {
     view.impacts.velocity = report::parse_hit_velocity(args.velocity);
     report::ImpactData data = load_impacts(args.input, view.impacts.velocity);
     report::drop_slow(data, args.min_velocity);
+    if (args.first_hits) report::keep_first_hits(data);
     if (data.rows.empty()) {
         throw std::invalid_argument(args.input +
                                     ": no wall hits of a sphere, massive or planar rock to "
@@ -51,6 +53,7 @@ void run(const EnvelopeArgs& args) {
     }
     view.impacts.data = &data;
     view.impacts.min_velocity = args.min_velocity;
+    view.impacts.first_hits = args.first_hits;
     view.formula = args.formula;
     view.compared = risk::compare_with_formula(data.rows, args.formula);
     view.confidence = args.confidence;
@@ -87,6 +90,9 @@ void register_envelope(CLI::App& app) {
     cmd->add_option("--min-velocity", args->min_velocity,
                     "Leave out impacts slower than this (m/s): resting or pushing contacts")
         ->capture_default_str();
+    cmd->add_flag("--first-hits", args->first_hits,
+                  "Database: only each rock's first hit, its arrival at the wall (seed 000 "
+                  "measured the velocity just before it), not rebounds or re-contacts");
     cmd->add_option("--worst", args->worst, "Number of worst impacts listed")
         ->capture_default_str();
     cmd->add_option("--confidence", args->confidence, "Confidence of the intervals, in (0, 1)")

@@ -133,6 +133,8 @@ nlohmann::json envelope_json(const EnvelopeView& view) {
             {"skipped", data.skipped},
             {"slow", data.slow},
             {"min_velocity_m_s", view.impacts.min_velocity},
+            {"later_hits", data.later},
+            {"first_hits_only", view.impacts.first_hits},
             {"confidence", view.confidence},
             {"all", stats_json(all)},
             {"by_shape", shapes},

@@ -130,6 +130,8 @@ nlohmann::json fit_json(const FitView& view) {
             {"skipped", data.skipped},
             {"slow", data.slow},
             {"min_velocity_m_s", view.impacts.min_velocity},
+            {"later_hits", data.later},
+            {"first_hits_only", view.impacts.first_hits},
             {"not_fitted", not_fitted},
             {"velocity", data.from_database ? nlohmann::json(to_string(view.impacts.velocity))
                                             : nlohmann::json(nullptr)},

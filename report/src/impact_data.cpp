@@ -11,6 +11,25 @@ namespace {
 
 bool positive(double x) { return std::isfinite(x) && x > 0.0; }
 
+// Keeps the rows (and their hits) for which keep(i) holds, counting the others in `dropped`.
+template <typename Keep>
+void keep_rows(ImpactData& data, std::size_t ImpactData::*dropped, Keep keep) {
+    ImpactData kept;
+    kept.from_database = data.from_database;
+    kept.skipped = data.skipped;
+    kept.slow = data.slow;
+    kept.later = data.later;
+    for (std::size_t i = 0; i < data.rows.size(); ++i) {
+        if (!keep(i)) {
+            ++(kept.*dropped);
+            continue;
+        }
+        kept.rows.push_back(data.rows[i]);
+        if (data.from_database) kept.hits.push_back(std::move(data.hits[i]));
+    }
+    data = std::move(kept);
+}
+
 }  // namespace
 
 HitVelocity parse_hit_velocity(const std::string& name) {
@@ -48,19 +67,17 @@ void drop_slow(ImpactData& data, double min_velocity) {
         throw std::invalid_argument("--min-velocity = " + std::to_string(min_velocity) +
                                     " m/s: must be finite and >= 0");
     }
-    ImpactData kept;
-    kept.from_database = data.from_database;
-    kept.skipped = data.skipped;
-    kept.slow = data.slow;
-    for (std::size_t i = 0; i < data.rows.size(); ++i) {
-        if (data.rows[i].velocity < min_velocity) {
-            ++kept.slow;
-            continue;
-        }
-        kept.rows.push_back(data.rows[i]);
-        if (data.from_database) kept.hits.push_back(std::move(data.hits[i]));
+    keep_rows(data, &ImpactData::slow,
+              [&](std::size_t i) { return data.rows[i].velocity >= min_velocity; });
+}
+
+void keep_first_hits(ImpactData& data) {
+    if (!data.from_database) {
+        throw std::invalid_argument(
+            "--first-hits applies to a results database (its hits are numbered per rock), not "
+            "to a CSV file of impacts");
     }
-    data = std::move(kept);
+    keep_rows(data, &ImpactData::later, [&](std::size_t i) { return data.hits[i].hit == 1; });
 }
 
 std::string describe(const ImpactData& data, const std::string& input, HitVelocity velocity) {
@@ -73,6 +90,10 @@ std::string describe(const ImpactData& data, const std::string& input, HitVeloci
     if (data.slow > 0) {
         left_out += (left_out.empty() ? "" : ", ") + std::to_string(data.slow) +
                     " slower than --min-velocity";
+    }
+    if (data.later > 0) {
+        left_out += (left_out.empty() ? "" : ", ") + std::to_string(data.later) +
+                    " second or later hits of a rock (--first-hits)";
     }
     const std::string n = std::to_string(data.rows.size());
     return input +

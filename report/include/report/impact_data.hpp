@@ -39,6 +39,8 @@ struct ImpactData {
     std::size_t skipped = 0;
     /// Rows left out as slower than the minimum velocity asked for (drop_slow).
     std::size_t slow = 0;
+    /// Rows left out as a rock's second or later hit (keep_first_hits).
+    std::size_t later = 0;
 };
 
 /// The impacts a report is about: the file named on the command line, its rows, the
@@ -48,6 +50,8 @@ struct ImpactSelection {
     const ImpactData* data = nullptr;
     HitVelocity velocity = HitVelocity::normal;
     double min_velocity = 0.0;
+    /// Only each rock's first hit (keep_first_hits).
+    bool first_hits = false;
 };
 
 /// The rows of a results database's wall hits (db::read_wall_impacts), the formula given the
@@ -60,6 +64,12 @@ ImpactData database_rows(std::vector<db::WallImpact> hits, HitVelocity velocity)
 /// weight and push, not by an impact the formula describes. Throws std::invalid_argument for
 /// a bad minimum.
 void drop_slow(ImpactData& data, double min_velocity);
+
+/// Leaves out every hit but each rock's first (counted in `later`): seed 000 measured the
+/// velocity just before a rock's arrival at the wall, not its rebounds, re-contacts or the
+/// slow contacts of a rock rocking or sliding along the wall. Throws std::invalid_argument for
+/// rows from a CSV file, which carry no hit number.
+void keep_first_hits(ImpactData& data);
 
 /// One line on where the rows come from and what was left out, for the reports:
 /// "FILE (results database: N wall hits, velocity normal; left out: ...)".
