@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 namespace rockfall::mpm {
 
@@ -367,22 +369,33 @@ void Solver<Dim>::update_spring(double dt) {
 
 namespace {
 
-// Phase 5 for particle p (update-stress-last): sigma co-rotated with the spin W = skew(C_p)
-// (Jaumann rate), then the constitutive model with the strain increment sym(L) dt, L = C_p
-// with its trace replaced by `trace` (C_p's own, or its dual cell's average);
-// V_p *= det(I + dt L). Returns the particle's new density, kg/m3.
+// Phase 5 for particle p (update-stress-last): sigma co-rotated with the spin W = skew(L)
+// (Jaumann rate), then the constitutive model with the strain increment sym(L) dt and
+// V_p *= det(I + dt L). L is C_p, or with `own_and_mean` (the particle's det(I + dt C_p) and
+// its dual cell's mean of it, volumetric averaging) the rate of the F-bar increment
+// (mean / own)^(1/Dim) (I + dt C_p), whose determinant is the mean. Returns the
+// particle's new density, kg/m3.
 template <int Dim, typename Model>
 double update_stress(Particles<Dim>& particles, std::size_t p, const Model& model, double dt,
-                     double trace) {
+                     std::optional<std::pair<double, double>> own_and_mean = std::nullopt) {
     Mat<Dim> c = particles.affine[p];
-    c.diagonal().array() += (trace - c.trace()) / Dim;
+    double volume_ratio = 0.0;
+    if (own_and_mean && own_and_mean->first > 0.0 && own_and_mean->second > 0.0) {
+        const double ratio = own_and_mean->second / own_and_mean->first;
+        const double s = Dim == 2 ? std::sqrt(ratio) : std::cbrt(ratio);
+        c = s * c;
+        c.diagonal().array() += (s - 1.0) / dt;
+        // det(s (I + dt C)) = s^Dim det(I + dt C): the mean, without a second determinant.
+        volume_ratio = own_and_mean->second;
+    } else {
+        volume_ratio = (Mat<Dim>::Identity() + dt * c).determinant();
+    }
     const Mat3 l = embed<Dim>(c);
     const Mat3 strain_increment = (0.5 * dt) * (l + l.transpose());
     const Mat3 rotated = detail::corotate(particles.stress[p], l, dt);
     particles.stress[p] =
         model.update(rotated, strain_increment, particles.plastic_shear_strain[p]);
-    const double jacobian = (Mat<Dim>::Identity() + dt * c).determinant();
-    particles.volume[p] *= jacobian;
+    particles.volume[p] *= volume_ratio;
     return particles.mass[p] / particles.volume[p];
 }
 
@@ -403,7 +416,7 @@ void Solver<Dim>::grid_to_particles(double dt) {
     w.task_density.assign(static_cast<std::size_t>(count), 0.0);
     const bool averaging = settings_.volumetric_averaging;
     if (averaging) {
-        w.particle_trace.resize(particles_.size());
+        w.particle_jacobian.resize(particles_.size());
         w.particle_cell.resize(particles_.size());
     }
     std::visit(
@@ -433,11 +446,11 @@ void Solver<Dim>::grid_to_particles(double dt) {
                     max_speed_squared =
                         std::max(max_speed_squared, particles_.velocity[p].squaredNorm());
                     if (averaging) {
-                        w.particle_trace[p] = particles_.affine[p].trace();
+                        w.particle_jacobian[p] =
+                            (Mat<Dim>::Identity() + dt * particles_.affine[p]).determinant();
                     } else {
-                        max_density = std::max(
-                            max_density,
-                            update_stress(particles_, p, model, dt, particles_.affine[p].trace()));
+                        max_density =
+                            std::max(max_density, update_stress(particles_, p, model, dt));
                     }
                 }
                 w.task_max[static_cast<std::size_t>(i)] = max_speed_squared;
@@ -452,9 +465,10 @@ void Solver<Dim>::grid_to_particles(double dt) {
                 double max_density = 0.0;
                 for (int k = pb.begin; k < pb.end; ++k) {
                     const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
-                    const double trace = means[static_cast<std::size_t>(w.particle_cell[p])];
-                    max_density =
-                        std::max(max_density, update_stress(particles_, p, model, dt, trace));
+                    const double mean = means[static_cast<std::size_t>(w.particle_cell[p])];
+                    max_density = std::max(max_density,
+                                           update_stress(particles_, p, model, dt,
+                                                         std::pair(w.particle_jacobian[p], mean)));
                 }
                 w.block_density[static_cast<std::size_t>(i)] = max_density;
             });
@@ -476,7 +490,8 @@ void Solver<Dim>::grid_to_particles(double dt) {
     }
 }
 
-// Volumetric averaging: the volume-weighted mean trace of C over each of the 2^Dim dual cells
+// Volumetric averaging: the volume-weighted mean volume ratio det(I + dt C) over each of the
+// 2^Dim dual cells
 // of the particle block holding the sorted particles [begin, end) (its particles lie in the sorted
 // order together and are summed in that order, so the result is thread-count independent).
 template <int Dim>
@@ -487,7 +502,7 @@ std::array<double, 1 << Dim> Solver<Dim>::dual_cell_means(int begin, int end) co
     for (int k = begin; k < end; ++k) {
         const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
         const auto cell = static_cast<std::size_t>(w.particle_cell[p]);
-        sum[cell] += particles_.volume[p] * w.particle_trace[p];
+        sum[cell] += particles_.volume[p] * w.particle_jacobian[p];
         weight[cell] += particles_.volume[p];
     }
     for (std::size_t c = 0; c < sum.size(); ++c) {

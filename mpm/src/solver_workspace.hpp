@@ -119,9 +119,9 @@ struct Solver<Dim>::Workspace {
     std::vector<double> task_max;
     std::vector<double> task_density;
     std::vector<int> task_count;
-    // Volumetric averaging: per particle its trace of C and its dual cell within its block,
-    // then the trace to use.
-    std::vector<double> particle_trace;
+    // Volumetric averaging: per particle its volume ratio det(I + dt C) over the step and its
+    // dual cell within its block.
+    std::vector<double> particle_jacobian;
     std::vector<std::int8_t> particle_cell;
     std::vector<double> block_density;
     // Per task of the block-key pass, its runs of equal keys.

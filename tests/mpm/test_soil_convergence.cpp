@@ -3,7 +3,7 @@
 // deposit (mean over the last second; the soil is at rest from about 4 s) converges with
 // volumetric averaging and rises with each particle's own volumetric rate, the volumetric
 // locking of a perfectly plastic flow at zero dilatancy (docs/soil.md, Refinement study).
-// Measured 2026-12-04: averaged 5.08 / 5.28 / 5.23 kN/m at 0.05 / 0.025 / 0.0125 m; own rates
+// Measured 2026-12-04: averaged 5.09 / 5.07 / 5.34 kN/m at 0.05 / 0.025 / 0.0125 m; own rates
 // 4.51 / 5.05 / 5.57 kN/m.
 #include "helpers.hpp"
 

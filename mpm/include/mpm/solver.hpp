@@ -71,14 +71,15 @@ struct SolverSettings {
     int threads = 0;
     /// Steps between physical reorderings of the particle arrays by grid block (>= 1).
     int reorder_interval = 16;
-    /// true (default): the volumetric strain rate tr(C_p) of every particle is replaced by the
-    /// volume-weighted mean over its dual cell (the h-wide box centred on a grid node, holding
-    /// the particles whose stencil starts one node below it) before the stress and volume
-    /// update; the deviatoric rate and the spin stay the particle's own. This is the
-    /// cell-averaged (B-bar/F-bar) treatment of volumetric locking of Coombs et al. (2018),
-    /// in rate form. false: each particle's own rate (the solver before 2026-12-04; a plastic
-    /// flow at zero dilatancy then locks, and the seed flow's static wall load rose about 10 %
-    /// per halving of the cell, docs/soil.md).
+    /// true (default): F-bar volumetric averaging. Each particle's volume ratio over the step,
+    /// det(I + dt C_p), is replaced by the volume-weighted mean over its dual cell (the h-wide
+    /// box centred on a grid node, holding the particles whose stencil starts one node below
+    /// it): the increment I + dt C_p is scaled by (mean / own)^(1/Dim) before the stress and
+    /// volume update, so the deviatoric part and the spin stay the particle's own and every
+    /// volume stays positive. This is the cell-averaged F-bar of Coombs et al. (2018) applied
+    /// to the step's increment. false: each particle's own rate (the solver before
+    /// 2026-12-04; a plastic flow at zero dilatancy then locks, and the seed flow's static wall
+    /// load rose about 10 % per halving of the cell, docs/soil.md).
     bool volumetric_averaging = true;
 };
 
