@@ -457,7 +457,7 @@ void Solver<Dim>::grid_to_particles(double dt) {
                 w.task_density[static_cast<std::size_t>(i)] = max_density;
             });
             if (!averaging) return;
-            // Per particle block: its dual cells' mean rates, then its particles' stresses.
+            // Per particle block: its dual cells' mean volume ratios, then its particles' stresses.
             w.block_density.assign(w.blocks.size(), 0.0);
             w.pool->run(w.block_split, [&](int i) {
                 const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(i)];
@@ -491,9 +491,8 @@ void Solver<Dim>::grid_to_particles(double dt) {
 }
 
 // Volumetric averaging: the volume-weighted mean volume ratio det(I + dt C) over each of the
-// 2^Dim dual cells
-// of the particle block holding the sorted particles [begin, end) (its particles lie in the sorted
-// order together and are summed in that order, so the result is thread-count independent).
+// 2^Dim dual cells of the particle block holding the sorted particles [begin, end) (they are
+// summed in that order, so the result is thread-count independent).
 template <int Dim>
 std::array<double, 1 << Dim> Solver<Dim>::dual_cell_means(int begin, int end) const {
     const Workspace& w = *work_;
