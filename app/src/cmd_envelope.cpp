@@ -22,8 +22,7 @@ struct EnvelopeArgs {
     std::string input;
     risk::EnvelopeFormula formula;
     std::string velocity = "normal";
-    double min_velocity = 0.0;
-    bool first_hits = false;
+    ImpactFilter filter;
     int worst = 10;
     double confidence = 0.95;
     bool json = false;
@@ -44,16 +43,13 @@ void run(const EnvelopeArgs& args) {
     view.impacts.input = args.input;
     view.impacts.velocity = report::parse_hit_velocity(args.velocity);
     report::ImpactData data = load_impacts(args.input, view.impacts.velocity);
-    report::drop_slow(data, args.min_velocity);
-    if (args.first_hits) report::keep_first_hits(data);
+    apply_impact_filter(data, args.filter, view.impacts);
     if (data.rows.empty()) {
         throw std::invalid_argument(args.input +
                                     ": no wall hits of a sphere, massive or planar rock to "
                                     "compare");
     }
     view.impacts.data = &data;
-    view.impacts.min_velocity = args.min_velocity;
-    view.impacts.first_hits = args.first_hits;
     view.formula = args.formula;
     view.compared = risk::compare_with_formula(data.rows, args.formula);
     view.confidence = args.confidence;
@@ -87,12 +83,7 @@ void register_envelope(CLI::App& app) {
                     "Hit velocity the formula gets: normal (to the wall) or total")
         ->capture_default_str()
         ->check(CLI::IsMember({"normal", "total"}));
-    cmd->add_option("--min-velocity", args->min_velocity,
-                    "Leave out impacts slower than this (m/s): resting or pushing contacts")
-        ->capture_default_str();
-    cmd->add_flag("--first-hits", args->first_hits,
-                  "Database: only each rock's first hit, its arrival at the wall (seed 000 "
-                  "measured the velocity just before it), not rebounds or re-contacts");
+    add_impact_filter_options(*cmd, args->filter);
     cmd->add_option("--worst", args->worst, "Number of worst impacts listed")
         ->capture_default_str();
     cmd->add_option("--confidence", args->confidence, "Confidence of the intervals, in (0, 1)")

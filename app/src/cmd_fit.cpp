@@ -28,8 +28,7 @@ struct FitArgs {
     std::string regression = "power";
     std::optional<double> mass;
     std::optional<std::string> velocity;
-    double min_velocity = 0.0;
-    bool first_hits = false;
+    ImpactFilter filter;
     std::optional<std::string> svg;
     bool json = false;
 };
@@ -39,8 +38,7 @@ void run(const FitArgs& args) {
     view.impacts.input = args.input;
     view.impacts.velocity = report::parse_hit_velocity(args.velocity.value_or("normal"));
     report::ImpactData data = load_impacts(args.input, view.impacts.velocity);
-    report::drop_slow(data, args.min_velocity);
-    if (args.first_hits) report::keep_first_hits(data);
+    apply_impact_filter(data, args.filter, view.impacts);
     if (args.velocity && !data.from_database) {
         throw std::invalid_argument("--velocity applies to a results database, not to " +
                                     args.input + " (a CSV file gives velocity_m_s)");
@@ -56,8 +54,6 @@ void run(const FitArgs& args) {
     options.form = risk::parse_regression_form(args.regression);
     options.reference_mass = args.mass;
     view.impacts.data = &data;
-    view.impacts.min_velocity = args.min_velocity;
-    view.impacts.first_hits = args.first_hits;
     view.regression = args.regression;
     view.identification = risk::identify_shapes(data.rows, options, args.input);
     view.svg = args.svg;
@@ -89,12 +85,7 @@ void register_fit(CLI::App& app) {
                     "Database: the hit velocity the formula gets, normal (to the wall, default) "
                     "or total")
         ->check(CLI::IsMember({"normal", "total"}));
-    cmd->add_option("--min-velocity", args->min_velocity,
-                    "Leave out impacts slower than this (m/s): resting or pushing contacts")
-        ->capture_default_str();
-    cmd->add_flag("--first-hits", args->first_hits,
-                  "Database: only each rock's first hit, its arrival at the wall (seed 000 "
-                  "measured the velocity just before it), not rebounds or re-contacts");
+    add_impact_filter_options(*cmd, args->filter);
     cmd->add_option("--shape", args->shape, "Fit only this shape: sphere, massive or planar");
     cmd->add_option("--lambda", args->lambda,
                     "Hold the Lame constant (Pa) fixed and identify beta; default: identified "

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace rockfall::report {
 namespace {
@@ -14,20 +16,18 @@ bool positive(double x) { return std::isfinite(x) && x > 0.0; }
 // Keeps the rows (and their hits) for which keep(i) holds, counting the others in `dropped`.
 template <typename Keep>
 void keep_rows(ImpactData& data, std::size_t ImpactData::*dropped, Keep keep) {
-    ImpactData kept;
-    kept.from_database = data.from_database;
-    kept.skipped = data.skipped;
-    kept.slow = data.slow;
-    kept.later = data.later;
+    std::vector<risk::ImpactRow> rows;
+    std::vector<db::WallImpact> hits;
     for (std::size_t i = 0; i < data.rows.size(); ++i) {
         if (!keep(i)) {
-            ++(kept.*dropped);
+            ++(data.*dropped);
             continue;
         }
-        kept.rows.push_back(data.rows[i]);
-        if (data.from_database) kept.hits.push_back(std::move(data.hits[i]));
+        rows.push_back(data.rows[i]);
+        if (data.from_database) hits.push_back(std::move(data.hits[i]));
     }
-    data = std::move(kept);
+    data.rows = std::move(rows);
+    data.hits = std::move(hits);
 }
 
 }  // namespace
