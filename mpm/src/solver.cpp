@@ -402,19 +402,21 @@ double update_stress(Particles<Dim>& particles, std::size_t p, const Model& mode
 }  // namespace
 
 // Phases 4 and 5 per particle block: each particle takes its velocity and affine velocity from
-// the grid and moves, then updates its stress, while its data are in cache.
+// the grid and moves, then updates its stress, while its data are in cache. Without volumetric
+// averaging a task is a chunk of a block; with it a task is a whole block, whose dual-cell means
+// need all its particles' volume ratios before any of its stresses.
 template <int Dim>
 void Solver<Dim>::grid_to_particles(double dt) {
     Grid& grid = *grid_;
     Workspace& w = *work_;
     const detail::KernelFrame<Dim> frame{grid.origin, grid.h};
-    const int count = static_cast<int>(w.chunks.size());
+    const bool averaging = settings_.volumetric_averaging;
+    const int count = static_cast<int>(averaging ? w.blocks.size() : w.chunks.size());
     // Damping acts on the particles after the transfer, so the boundary impulses of a body at
     // rest are its full reactions.
     const double damping = 1.0 / (1.0 + settings_.damping * dt);
     w.task_max.assign(static_cast<std::size_t>(count), 0.0);
     w.task_density.assign(static_cast<std::size_t>(count), 0.0);
-    const bool averaging = settings_.volumetric_averaging;
     if (averaging) {
         w.particle_jacobian.resize(particles_.size());
         w.particle_cell.resize(particles_.size());
@@ -425,14 +427,14 @@ void Solver<Dim>::grid_to_particles(double dt) {
             using Model = std::conditional_t<std::is_same_v<Params, LinearElastic>,
                                              LinearElasticModel, DruckerPragerModel>;
             const Model model(params);
-            w.pool->run(w.chunk_split, [&](int i) {
+            // Sorted particles [begin, end) of block pb: gather, move and (without averaging)
+            // update the stress. Returns the largest squared speed and density.
+            const auto gather = [&](const ParticleBlock<Dim>& pb, int begin, int end) {
                 double max_speed_squared = 0.0;
                 double max_density = 0.0;
-                const detail::ParticleChunk& chunk = w.chunks[static_cast<std::size_t>(i)];
-                const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(chunk.block)];
                 detail::LocalNodes<Dim> local;
                 detail::gather_local_nodes<Dim>(grid.data, pb.first_node, pb.slots, local);
-                for (int k = chunk.begin; k < chunk.end; ++k) {
+                for (int k = begin; k < end; ++k) {
                     const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
                     if (averaging) {
                         w.particle_cell[p] = static_cast<std::int8_t>(
@@ -453,14 +455,22 @@ void Solver<Dim>::grid_to_particles(double dt) {
                             std::max(max_density, update_stress(particles_, p, model, dt));
                     }
                 }
-                w.task_max[static_cast<std::size_t>(i)] = max_speed_squared;
-                w.task_density[static_cast<std::size_t>(i)] = max_density;
-            });
-            if (!averaging) return;
-            // Per particle block: its dual cells' mean volume ratios, then its particles' stresses.
-            w.block_density.assign(w.blocks.size(), 0.0);
+                return std::pair(max_speed_squared, max_density);
+            };
+            if (!averaging) {
+                w.pool->run(w.chunk_split, [&](int i) {
+                    const detail::ParticleChunk& chunk = w.chunks[static_cast<std::size_t>(i)];
+                    const auto [speed, density] = gather(
+                        w.blocks[static_cast<std::size_t>(chunk.block)], chunk.begin, chunk.end);
+                    w.task_max[static_cast<std::size_t>(i)] = speed;
+                    w.task_density[static_cast<std::size_t>(i)] = density;
+                });
+                return;
+            }
+            // Per particle block: gather, its dual cells' mean volume ratios, its stresses.
             w.pool->run(w.block_split, [&](int i) {
                 const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(i)];
+                const double speed = gather(pb, pb.begin, pb.end).first;
                 const auto means = dual_cell_means(pb.begin, pb.end);
                 double max_density = 0.0;
                 for (int k = pb.begin; k < pb.end; ++k) {
@@ -470,7 +480,8 @@ void Solver<Dim>::grid_to_particles(double dt) {
                                            update_stress(particles_, p, model, dt,
                                                          std::pair(w.particle_jacobian[p], mean)));
                 }
-                w.block_density[static_cast<std::size_t>(i)] = max_density;
+                w.task_max[static_cast<std::size_t>(i)] = speed;
+                w.task_density[static_cast<std::size_t>(i)] = max_density;
             });
         },
         material_);
@@ -482,11 +493,6 @@ void Solver<Dim>::grid_to_particles(double dt) {
     max_density_ = 0.0;
     for (const double m : w.task_density) {
         max_density_ = std::max(max_density_, m);
-    }
-    if (averaging) {
-        for (const double m : w.block_density) {
-            max_density_ = std::max(max_density_, m);
-        }
     }
 }
 

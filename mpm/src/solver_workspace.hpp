@@ -123,7 +123,6 @@ struct Solver<Dim>::Workspace {
     // dual cell within its block.
     std::vector<double> particle_jacobian;
     std::vector<std::int8_t> particle_cell;
-    std::vector<double> block_density;
     // Per task of the block-key pass, its runs of equal keys.
     std::vector<std::vector<detail::KeyRun>> key_runs;
     std::unique_ptr<shapes::ThreadPool> pool;
