@@ -33,6 +33,9 @@ int BlockGrid<Dim>::ensure_slot(int id, const std::vector<StaticBoundary>& stati
     }
     block_of_slot.push_back(b);
     data.resize(data.size() + kBlockNodes<Dim>, Node<Dim>::Zero());
+    if (keep_old_velocity) {
+        old_velocity.resize(data.size(), Node<Dim>::Zero());
+    }
     rule_of_node.resize(rule_of_node.size() + kBlockNodes<Dim>, -1);
     const std::size_t first = static_cast<std::size_t>(slot) * kBlockNodes<Dim>;
     for (int local = 0; local < kBlockNodes<Dim>; ++local) {

@@ -99,6 +99,10 @@ struct BlockGrid {
     std::vector<std::int32_t> slot_of_block;
     std::vector<IVec<Dim>> block_of_slot;
     std::vector<Node<Dim>> data;
+    // With SolverSettings::flip > 0, per node the velocity before the step's forces (first the
+    // force impulse scattered by the particles), as `data`; empty otherwise.
+    std::vector<Node<Dim>> old_velocity;
+    bool keep_old_velocity = false;
     std::vector<std::int32_t> rule_of_node;
     std::vector<NodeRule<Dim>> rules;
     // Signed distance up to which a node counts as inside a solid, m (SolverSettings).

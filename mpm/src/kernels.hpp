@@ -90,6 +90,31 @@ inline IVec<Dim> block_local_coords(int j) {
     return l;
 }
 
+// Calls f(local offset, integer node offset s[Dim], weight) for the 3^Dim nodes of a particle's
+// stencil in its block's 4^Dim buffer (first axis slowest).
+template <int Dim, typename F>
+inline void for_each_stencil_node(const Stencil<Dim>& s, const IVec<Dim>& first_node, F&& f) {
+    int l[Dim];
+    for (int d = 0; d < Dim; ++d) {
+        l[d] = s.base[d] - first_node[d];
+    }
+    int o[Dim] = {};
+    for (int n = 0; n < power(3, Dim); ++n) {
+        int rest = n;
+        int offset = 0;
+        double w = 1.0;
+        for (int d = Dim - 1; d >= 0; --d) {
+            o[d] = rest % 3;
+            rest /= 3;
+        }
+        for (int d = 0; d < Dim; ++d) {
+            offset = offset * kLocalEdge + l[d] + o[d];
+            w *= s.w[d][o[d]];
+        }
+        f(offset, o, w);
+    }
+}
+
 // Adds one particle's mass and momentum to the 4^Dim buffer of its particle block:
 // w_ip [m v + Q (x_i - x_p); m] with Q = m C - dt V D^-1 sigma, D^-1 = 4/h^2 (Hu et al. 2018,
 // eq. 29). With x_i - x_p = h (s - fx) for the integer node offset s, the bracket is
@@ -159,6 +184,54 @@ inline void scatter_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& fir
             }
         }
     }
+}
+
+// The stress part of scatter_particle alone, -w_ip dt V D^-1 sigma (x_i - x_p) (mass lane 0):
+// the force impulse, kept apart for the FLIP update (SolverSettings::flip).
+template <int Dim>
+inline void scatter_force(const KernelFrame<Dim>& frame, const IVec<Dim>& first_node, double dt,
+                          const Vec<Dim>& x, const Mat3& stress, double volume,
+                          LocalNodes<Dim>& local) {
+    constexpr int N = Dim + 1;
+    const Stencil<Dim> s = make_stencil(frame, x);
+    const double h = frame.h;
+    const double force = dt * volume * 4.0 / (h * h);
+    const double* sigma = stress.data();
+    double step[Dim][Dim];
+    double q0[Dim] = {};
+    for (int d = 0; d < Dim; ++d) {
+        for (int r = 0; r < Dim; ++r) {
+            step[d][r] = -h * force * sigma[r + 3 * d];
+            q0[r] -= step[d][r] * s.fx[d];
+        }
+    }
+    double* out = local[0].data();
+    for_each_stencil_node<Dim>(s, first_node, [&](int offset, const int* o, double w) {
+        double* node = out + N * offset;
+        for (int r = 0; r < Dim; ++r) {
+            double q = q0[r];
+            for (int d = 0; d < Dim; ++d) {
+                q += o[d] * step[d][r];
+            }
+            node[r] += w * q;
+        }
+    });
+}
+
+// sum_i w_ip v_i over a particle's stencil of `local` (a block's gathered nodes).
+template <int Dim>
+inline Vec<Dim> interpolate(const KernelFrame<Dim>& frame, const IVec<Dim>& first_node,
+                            const LocalNodes<Dim>& local, const Vec<Dim>& x) {
+    constexpr int N = Dim + 1;
+    const Stencil<Dim> s = make_stencil(frame, x);
+    const double* in = local[0].data();
+    Vec<Dim> v = Vec<Dim>::Zero();
+    for_each_stencil_node<Dim>(s, first_node, [&](int offset, const int*, double w) {
+        for (int r = 0; r < Dim; ++r) {
+            v[r] += w * in[N * offset + r];
+        }
+    });
+    return v;
 }
 
 // Calls f(local_index, grid_data_index) for every node of a particle block's local buffer.

@@ -159,6 +159,7 @@ void validate(const SoilScenario& s) {
     problems.check(n.cfl > 0.0 && n.cfl <= 1.0, "numerics.cfl", n.cfl, "", "in (0, 1]");
     problems.check(n.boundary_reach >= 0.0 && n.boundary_reach <= 0.5, "numerics.boundary_reach",
                    n.boundary_reach, "", "in [0, 0.5]");
+    problems.check(n.flip >= 0.0 && n.flip <= 1.0, "numerics.flip", n.flip, "", "in [0, 1]");
     problems.check(n.threads >= 0, "numerics.threads", n.threads, "", ">= 0");
     const SoilOutput& o = s.output;
     problems.check(positive(o.duration), "output.duration", o.duration, "s", "> 0");
@@ -300,6 +301,7 @@ SoilModel<Dim> build_soil_model(const SoilScenario& scenario) {
     settings.domain_max = hi + Vec3::Constant(3.0 * h);
     settings.boundary_reach = scenario.numerics.boundary_reach;
     settings.volumetric_averaging = scenario.numerics.volumetric_averaging;
+    settings.flip = scenario.numerics.flip;
     settings.cfl = scenario.numerics.cfl;
     settings.threads = scenario.numerics.threads;
     settings.max_time_step = scenario.output.sample_interval;

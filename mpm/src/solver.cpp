@@ -54,6 +54,7 @@ Solver<Dim>::Solver(const SolverSettings& settings, const Material& material,
     require(s.cfl > 0.0 && s.cfl <= 1.0, "cfl", s.cfl, "", "in (0, 1]");
     require(s.max_time_step > 0.0, "max_time_step", s.max_time_step, "s", "> 0");
     require(s.damping >= 0.0, "damping", s.damping, "1/s", ">= 0");
+    require(s.flip >= 0.0 && s.flip <= 1.0, "flip", s.flip, "", "in [0, 1]");
     require(s.threads >= 0, "threads", s.threads, "", ">= 0");
     require(s.reorder_interval >= 1, "reorder_interval", s.reorder_interval, "", ">= 1");
     validate(material_);
@@ -71,6 +72,7 @@ Solver<Dim>::Solver(const SolverSettings& settings, const Material& material,
     // a wall at the same place computed another way differ in the last bits.
     grid_ = std::make_unique<Grid>(lo, s.cell_size, nodes,
                                    std::max(s.boundary_reach, 1e-6) * s.cell_size);
+    grid_->keep_old_velocity = s.flip > 0.0;
     int particle_block_count = 1;
     for (int d = 0; d < Dim; ++d) {
         work_->particle_blocks[d] = (nodes[d] + kParticleBlockEdge - 1) / kParticleBlockEdge;
@@ -176,7 +178,9 @@ void Solver<Dim>::particles_to_grid(double dt) {
     Grid& grid = *grid_;
     Workspace& w = *work_;
     const detail::KernelFrame<Dim> frame{grid.origin, grid.h};
+    const bool flip = settings_.flip > 0.0;
     w.buffers.resize(w.blocks.size());
+    if (flip) w.force_buffers.resize(w.blocks.size());
     w.pool->run(w.block_split, [&](int i) {
         const ParticleBlock<Dim>& pb = w.blocks[static_cast<std::size_t>(i)];
         detail::LocalNodes<Dim>& local = w.buffers[static_cast<std::size_t>(i)];
@@ -189,6 +193,16 @@ void Solver<Dim>::particles_to_grid(double dt) {
                                           particles_.velocity[p], particles_.affine[p],
                                           particles_.stress[p], particles_.mass[p],
                                           particles_.volume[p], local);
+        }
+        if (!flip) return;
+        detail::LocalNodes<Dim>& forces = w.force_buffers[static_cast<std::size_t>(i)];
+        for (auto& node : forces) {
+            node.setZero();
+        }
+        for (int k = pb.begin; k < pb.end; ++k) {
+            const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
+            detail::scatter_force<Dim>(frame, pb.first_node, dt, particles_.position[p],
+                                       particles_.stress[p], particles_.volume[p], forces);
         }
     });
 }
@@ -221,11 +235,18 @@ void Solver<Dim>::update_grid(double dt) {
         w.slot_spring_nodes.resize(active.size());
     }
     const Vec<Dim> gravity = from_scene<Dim>(settings_.gravity);
+    const bool flip = settings_.flip > 0.0;
     w.pool->run(w.slot_split, [&](int i) {
         const auto slot = static_cast<std::size_t>(active[static_cast<std::size_t>(i)]);
         Node<Dim>* nodes = grid.data.data() + slot * kBlockNodes<Dim>;
         for (int j = 0; j < kBlockNodes<Dim>; ++j) {
             nodes[j].setZero();
+        }
+        Node<Dim>* old_nodes = flip ? grid.old_velocity.data() + slot * kBlockNodes<Dim> : nullptr;
+        if (flip) {
+            for (int j = 0; j < kBlockNodes<Dim>; ++j) {
+                old_nodes[j].setZero();
+            }
         }
         for (std::int32_t c = w.contribution_start[static_cast<std::size_t>(i)];
              c < w.contribution_start[static_cast<std::size_t>(i) + 1]; ++c) {
@@ -233,6 +254,10 @@ void Solver<Dim>::update_grid(double dt) {
             const auto b = static_cast<std::size_t>(from.block);
             detail::add_buffer_part<Dim>(w.buffers[b], w.blocks[b].first_node, from.offset_bits,
                                          nodes);
+            if (flip) {
+                detail::add_buffer_part<Dim>(w.force_buffers[b], w.blocks[b].first_node,
+                                             from.offset_bits, old_nodes);
+            }
         }
 
         auto& impulse = w.slot_impulse[static_cast<std::size_t>(i)];
@@ -250,6 +275,12 @@ void Solver<Dim>::update_grid(double dt) {
                 continue;
             }
             const IVec<Dim> index = first_node + detail::block_local_coords<Dim>(j);
+            if (flip) {
+                // The momentum less the stress impulse: the velocity before the step's forces.
+                Node<Dim>& old = old_nodes[j];
+                old.template head<Dim>() =
+                    (node.template head<Dim>() - old.template head<Dim>()) / m;
+            }
             Vec<Dim> v = node.template head<Dim>() / m + dt * gravity;
             detail::apply_domain_faces<Dim>(index, grid.nodes, v);
             const std::int32_t rule =
@@ -411,6 +442,7 @@ void Solver<Dim>::grid_to_particles(double dt) {
     Workspace& w = *work_;
     const detail::KernelFrame<Dim> frame{grid.origin, grid.h};
     const bool averaging = settings_.volumetric_averaging;
+    const double flip = settings_.flip;
     const int count = static_cast<int>(averaging ? w.blocks.size() : w.chunks.size());
     // Damping acts on the particles after the transfer, so the boundary impulses of a body at
     // rest are its full reactions.
@@ -434,16 +466,28 @@ void Solver<Dim>::grid_to_particles(double dt) {
                 double max_density = 0.0;
                 detail::LocalNodes<Dim> local;
                 detail::gather_local_nodes<Dim>(grid.data, pb.first_node, pb.slots, local);
+                detail::LocalNodes<Dim> old;
+                if (flip > 0.0) {
+                    detail::gather_local_nodes<Dim>(grid.old_velocity, pb.first_node, pb.slots,
+                                                    old);
+                }
                 for (int k = begin; k < end; ++k) {
                     const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
                     if (averaging) {
                         w.particle_cell[p] = static_cast<std::int8_t>(
                             detail::dual_cell<Dim>(frame, pb.first_node, particles_.position[p]));
                     }
+                    // FLIP part: the particle's own velocity less the grid's before the step.
+                    const Vec<Dim> own =
+                        flip > 0.0 ? Vec<Dim>(particles_.velocity[p] -
+                                              detail::interpolate<Dim>(frame, pb.first_node, old,
+                                                                       particles_.position[p]))
+                                   : Vec<Dim>::Zero();
                     detail::gather_particle<Dim>(frame, pb.first_node, local,
                                                  particles_.position[p], particles_.velocity[p],
                                                  particles_.affine[p]);
                     particles_.position[p] += dt * particles_.velocity[p];
+                    if (flip > 0.0) particles_.velocity[p] += flip * own;
                     particles_.velocity[p] *= damping;
                     max_speed_squared =
                         std::max(max_speed_squared, particles_.velocity[p].squaredNorm());

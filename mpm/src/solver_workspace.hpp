@@ -94,6 +94,8 @@ struct Solver<Dim>::Workspace {
     std::array<std::vector<int>, detail::kColours<Dim>> colours;
     // One scatter buffer per entry of `blocks`.
     std::vector<detail::LocalNodes<Dim>> buffers;
+    // With SolverSettings::flip > 0: per entry of `blocks` its particles' force impulses.
+    std::vector<detail::LocalNodes<Dim>> force_buffers;
     std::vector<std::int32_t> active_slots;
     std::vector<long> slot_stamp;
     // Per slot, its index in active_slots (valid for this step's active slots).

@@ -177,7 +177,8 @@ double lube_runout(double a) {
 
 double lajeunesse_runout(double a) { return a < 3.0 ? 1.8 * a : 2.3 * std::pow(a, 2.0 / 3.0); }
 
-ColumnCollapse column_collapse(double aspect, int cells_per_length) {
+ColumnCollapse column_collapse(double aspect, int cells_per_length,
+                               const CollapseNumerics& numerics) {
     if (!(aspect > 0.0) || cells_per_length < 4) {
         throw std::invalid_argument("column_collapse: aspect must be > 0 and cells >= 4");
     }
@@ -190,6 +191,8 @@ ColumnCollapse column_collapse(double aspect, int cells_per_length) {
     SolverSettings s;
     s.threads = 1;
     s.cell_size = h;
+    s.cfl = numerics.cfl;
+    s.flip = numerics.flip;
     s.domain_min = Vec3(-0.1, 0.0, -0.1);
     s.domain_max = Vec3(length * (1.0 + 2.5 * aspect) + 0.3, 0.0, height + 0.1);
     const double mu = std::tan(std::numbers::pi / 6.0);

@@ -68,7 +68,7 @@ inline constexpr std::array<detail::EnumName<mpm::WallSupport>, 2> wall_support_
     {"spring", mpm::WallSupport::spring},
 }};
 
-inline const Fields<mpm::SoilNumerics, 8> soil_numerics_fields{{
+inline const Fields<mpm::SoilNumerics, 9> soil_numerics_fields{{
     {"dimension", &mpm::SoilNumerics::dimension, "", detail::closed(2, 3)},
     {"cell_size", &mpm::SoilNumerics::cell_size, "m", detail::positive()},
     {"particles_per_cell", &mpm::SoilNumerics::particles_per_cell, "", detail::closed(1, 8)},
@@ -76,6 +76,7 @@ inline const Fields<mpm::SoilNumerics, 8> soil_numerics_fields{{
     {"align_grid", &mpm::SoilNumerics::align_grid, "", {}},
     {"boundary_reach", &mpm::SoilNumerics::boundary_reach, "", detail::closed(0.0, 0.5)},
     {"volumetric_averaging", &mpm::SoilNumerics::volumetric_averaging, "", {}},
+    {"flip", &mpm::SoilNumerics::flip, "", detail::closed(0.0, 1.0)},
     {"threads", &mpm::SoilNumerics::threads, "", detail::non_negative()},
 }};
 

@@ -186,6 +186,16 @@ TEST_CASE("soil file: grid placement keys", "[scenario][soil]") {
     CHECK_THAT(std::string(error.what()), Contains("bad_grid.toml:4"));
 }
 
+TEST_CASE("soil file: numerics.flip", "[scenario][soil]") {
+    CHECK(rockfall::scenario::parse_soil_scenario("", "defaults.toml").scenario.numerics.flip ==
+          0.0);
+    CHECK(rockfall::scenario::parse_soil_scenario("[numerics]\nflip = 0.99\n", "flip.toml")
+              .scenario.numerics.flip == 0.99);
+    const ScenarioError error = parse_error("[numerics]\nflip = 1.2\n", "bad_flip.toml");
+    REQUIRE(error.problems().size() == 1);
+    expect_at(error, "numerics.flip", 2, {"1.2", "must be in [0, 1]"});
+}
+
 TEST_CASE("soil file: spring-backed wall keys", "[scenario][soil]") {
     const rockfall::scenario::SoilFile file = rockfall::scenario::parse_soil_scenario(
         "[boundaries]\nwall_support = \"spring\"\nwall_facing_mass = 30\nwall_stiffness = 2e6\n"

@@ -101,6 +101,10 @@ struct SoilNumerics {
     /// volumetric locking (SolverSettings::volumetric_averaging). true (default); false: the
     /// solver before 2026-12-04.
     bool volumetric_averaging = true;
+    /// FLIP fraction of the particle velocity update, [0, 1] (SolverSettings::flip). 0
+    /// (default): APIC, whose per-step smoothing makes a flow's dissipation depend on the time
+    /// step; 0.99 keeps 1 % of it.
+    double flip = 0.0;
     /// Worker threads (>= 0; 0 = all available).
     int threads = 0;
 };

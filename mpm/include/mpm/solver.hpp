@@ -81,6 +81,13 @@ struct SolverSettings {
     /// 2026-12-04; a plastic flow at zero dilatancy then locks, and the seed flow's static wall
     /// load rose about 10 % per halving of the cell, docs/soil.md).
     bool volumetric_averaging = true;
+    /// FLIP fraction of the particle velocity update, [0, 1]. 0 (default): APIC, v_p = sum w v_i
+    /// (the grid velocity after the step). alpha > 0: v_p = sum w v_i + alpha (v_p_old -
+    /// sum w v_i_old), v_i_old the grid velocity before the step's forces (PIC/FLIP blend,
+    /// Zhu & Bridson 2005; with APIC's affine velocity as Fei et al. 2021). Each APIC transfer
+    /// smooths the velocity field's non-affine part, a loss per step, so with alpha = 0 a flow's
+    /// dissipation grows as the time step shrinks (docs/soil.md); alpha keeps 1 - alpha of it.
+    double flip = 0.0;
 };
 
 /// One zero vector per boundary group (Eigen vectors are not zeroed by default).

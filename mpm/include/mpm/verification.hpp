@@ -88,8 +88,15 @@ struct ColumnCollapse {
     std::vector<Vec<2>> deposit;
 };
 
+/// The collapse's transfer settings (SolverSettings::cfl and flip).
+struct CollapseNumerics {
+    double cfl = 0.3;
+    double flip = 0.0;
+};
+
 /// Runs the collapse of aspect `aspect` (> 0) at `cells_per_length` cells per L0 (>= 4).
-ColumnCollapse column_collapse(double aspect, int cells_per_length = 16);
+ColumnCollapse column_collapse(double aspect, int cells_per_length = 16,
+                               const CollapseNumerics& numerics = {});
 
 /// A 0.4 m x 0.2 m elastic block (E = 5 MPa, nu 0.3, 2000 kg/m3, cell 0.05 m) released with zero
 /// stress on an incline whose boundary is an oriented box not aligned with the grid.
