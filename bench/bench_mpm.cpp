@@ -8,7 +8,7 @@
 // 0.5 m past the toe), so the benchmark times the flow that `rockfall soil` runs, wall load
 // included; the arguments override its cell size and duration.
 //
-// Usage: bench_mpm [cell_size_m] [duration_s] [max_threads] [rounds]
+// Usage: bench_mpm [cell_size_m] [duration_s] [max_threads] [rounds] [flip]
 #include "scenario/soil_file.hpp"
 
 #include "mpm/soil.hpp"
@@ -84,14 +84,18 @@ int main(int argc, char** argv) {
     }
     const int max_threads = argc > 3 ? std::atoi(argv[3]) : 2;
     const int repeats = argc > 4 ? std::max(1, std::atoi(argv[4])) : 5;
+    if (argc > 5) {
+        scenario.numerics.flip = std::atof(argv[5]);
+    }
 
     std::printf("machine: %u hardware threads, %s\n", std::thread::hardware_concurrency(),
                 cpu_model().c_str());
     std::printf(
-        "scenario: %s, %dD, cell %.3f m, %d particles per cell edge, %.1f s; %d runs per "
-        "thread count, interleaved\n",
+        "scenario: %s, %dD, cell %.3f m, %d particles per cell edge, %.1f s, flip %g; %d runs "
+        "per thread count, interleaved\n",
         file.c_str(), scenario.numerics.dimension, scenario.numerics.cell_size,
-        scenario.numerics.particles_per_cell, scenario.output.duration, repeats);
+        scenario.numerics.particles_per_cell, scenario.output.duration, scenario.numerics.flip,
+        repeats);
     // Runs interleave the thread counts so that a change in the machine's load hits all alike;
     // the speed-up is the median of the per-round ratios.
     std::vector<std::vector<double>> walls(static_cast<std::size_t>(max_threads));

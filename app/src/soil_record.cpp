@@ -45,6 +45,7 @@ db::SoilRunRecord make_soil_record(const scenario::SoilFile& file, const mpm::So
         {"boundary_reach", s.numerics.boundary_reach},
         {"volumetric_averaging", s.numerics.volumetric_averaging},
         {"flip", s.numerics.flip},
+        {"min_density_ratio", s.numerics.min_density_ratio},
         {"wall_support",
          s.boundaries.wall_support == mpm::WallSupport::spring ? "spring" : "rigid"},
         {"wall_facing_mass_kg_m2", s.boundaries.wall_facing_mass},

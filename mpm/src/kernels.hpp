@@ -90,39 +90,17 @@ inline IVec<Dim> block_local_coords(int j) {
     return l;
 }
 
-// Calls f(local offset, integer node offset s[Dim], weight) for the 3^Dim nodes of a particle's
-// stencil in its block's 4^Dim buffer (first axis slowest).
-template <int Dim, typename F>
-inline void for_each_stencil_node(const Stencil<Dim>& s, const IVec<Dim>& first_node, F&& f) {
-    int l[Dim];
-    for (int d = 0; d < Dim; ++d) {
-        l[d] = s.base[d] - first_node[d];
-    }
-    int o[Dim] = {};
-    for (int n = 0; n < power(3, Dim); ++n) {
-        int rest = n;
-        int offset = 0;
-        double w = 1.0;
-        for (int d = Dim - 1; d >= 0; --d) {
-            o[d] = rest % 3;
-            rest /= 3;
-        }
-        for (int d = 0; d < Dim; ++d) {
-            offset = offset * kLocalEdge + l[d] + o[d];
-            w *= s.w[d][o[d]];
-        }
-        f(offset, o, w);
-    }
-}
-
 // Adds one particle's mass and momentum to the 4^Dim buffer of its particle block:
 // w_ip [m v + Q (x_i - x_p); m] with Q = m C - dt V D^-1 sigma, D^-1 = 4/h^2 (Hu et al. 2018,
 // eq. 29). With x_i - x_p = h (s - fx) for the integer node offset s, the bracket is
 // q0 + h Q s, advanced incrementally along each axis.
+// With a `forces` buffer (the FLIP update, SolverSettings::flip) the stress part alone,
+// -w_ip dt V D^-1 sigma (x_i - x_p), is added to it as well (mass lane 0).
 template <int Dim>
 inline void scatter_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& first_node, double dt,
                              const Vec<Dim>& x, const Vec<Dim>& v, const Mat<Dim>& c,
-                             const Mat3& stress, double m, double volume, LocalNodes<Dim>& local) {
+                             const Mat3& stress, double m, double volume, LocalNodes<Dim>& local,
+                             LocalNodes<Dim>* forces = nullptr) {
     constexpr int N = Dim + 1;
     const Stencil<Dim> s = make_stencil(frame, x);
     const double h = frame.h;
@@ -146,6 +124,23 @@ inline void scatter_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& fir
         }
     }
     q0[Dim] = m;
+    // The same bracket for the stress part only.
+    double force_step[Dim][N];
+    double force_q0[N];
+    for (int d = 0; d < Dim; ++d) {
+        for (int r = 0; r < Dim; ++r) {
+            force_step[d][r] = -h * force * sigma[r + 3 * d];
+        }
+        force_step[d][Dim] = 0.0;
+    }
+    for (int r = 0; r < Dim; ++r) {
+        force_q0[r] = 0.0;
+        for (int d = 0; d < Dim; ++d) {
+            force_q0[r] -= force_step[d][r] * s.fx[d];
+        }
+    }
+    force_q0[Dim] = 0.0;
+    double* force_out = forces ? (*forces)[0].data() : nullptr;
     int l[Dim];
     const int* first = first_node.data();
     for (int d = 0; d < Dim; ++d) {
@@ -156,9 +151,16 @@ inline void scatter_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& fir
         for (int i = 0; i < 3; ++i) {
             for (int j = 0; j < 3; ++j) {
                 const double wij = s.w[0][i] * s.w[1][j];
-                double* node = out + N * ((l[0] + i) * kLocalEdge + (l[1] + j));
+                const int offset = N * ((l[0] + i) * kLocalEdge + (l[1] + j));
+                double* node = out + offset;
                 for (int r = 0; r < N; ++r) {
                     node[r] += wij * (q0[r] + i * step[0][r] + j * step[1][r]);
+                }
+                if (force_out) {
+                    for (int r = 0; r < Dim; ++r) {
+                        force_out[offset + r] +=
+                            wij * (force_q0[r] + i * force_step[0][r] + j * force_step[1][r]);
+                    }
                 }
             }
         }
@@ -170,68 +172,33 @@ inline void scatter_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& fir
         const Eigen::Map<const Packed> along_i(step[0]);
         const Eigen::Map<const Packed> along_j(step[1]);
         const Eigen::Map<const Packed> along_k(step[2]);
+        const Eigen::Map<const Packed> force_base(force_q0);
+        const Eigen::Map<const Packed> force_i(force_step[0]);
+        const Eigen::Map<const Packed> force_j(force_step[1]);
+        const Eigen::Map<const Packed> force_k(force_step[2]);
         for (int i = 0; i < 3; ++i) {
             for (int j = 0; j < 3; ++j) {
                 const Packed qij = base + i * along_i + j * along_j;
                 const double wij = s.w[0][i] * s.w[1][j];
-                double* node =
-                    out + N * (((l[0] + i) * kLocalEdge + (l[1] + j)) * kLocalEdge + l[2]);
+                const int offset = N * (((l[0] + i) * kLocalEdge + (l[1] + j)) * kLocalEdge + l[2]);
+                double* node = out + offset;
                 Eigen::Map<Packed, Eigen::Aligned16>(node) += (wij * s.w[2][0]) * qij;
                 Eigen::Map<Packed, Eigen::Aligned16>(node + N) +=
                     (wij * s.w[2][1]) * (qij + along_k);
                 Eigen::Map<Packed, Eigen::Aligned16>(node + 2 * N) +=
                     (wij * s.w[2][2]) * (qij + 2.0 * along_k);
+                if (force_out) {
+                    const Packed fij = force_base + i * force_i + j * force_j;
+                    double* f = force_out + offset;
+                    Eigen::Map<Packed, Eigen::Aligned16>(f) += (wij * s.w[2][0]) * fij;
+                    Eigen::Map<Packed, Eigen::Aligned16>(f + N) +=
+                        (wij * s.w[2][1]) * (fij + force_k);
+                    Eigen::Map<Packed, Eigen::Aligned16>(f + 2 * N) +=
+                        (wij * s.w[2][2]) * (fij + 2.0 * force_k);
+                }
             }
         }
     }
-}
-
-// The stress part of scatter_particle alone, -w_ip dt V D^-1 sigma (x_i - x_p) (mass lane 0):
-// the force impulse, kept apart for the FLIP update (SolverSettings::flip).
-template <int Dim>
-inline void scatter_force(const KernelFrame<Dim>& frame, const IVec<Dim>& first_node, double dt,
-                          const Vec<Dim>& x, const Mat3& stress, double volume,
-                          LocalNodes<Dim>& local) {
-    constexpr int N = Dim + 1;
-    const Stencil<Dim> s = make_stencil(frame, x);
-    const double h = frame.h;
-    const double force = dt * volume * 4.0 / (h * h);
-    const double* sigma = stress.data();
-    double step[Dim][Dim];
-    double q0[Dim] = {};
-    for (int d = 0; d < Dim; ++d) {
-        for (int r = 0; r < Dim; ++r) {
-            step[d][r] = -h * force * sigma[r + 3 * d];
-            q0[r] -= step[d][r] * s.fx[d];
-        }
-    }
-    double* out = local[0].data();
-    for_each_stencil_node<Dim>(s, first_node, [&](int offset, const int* o, double w) {
-        double* node = out + N * offset;
-        for (int r = 0; r < Dim; ++r) {
-            double q = q0[r];
-            for (int d = 0; d < Dim; ++d) {
-                q += o[d] * step[d][r];
-            }
-            node[r] += w * q;
-        }
-    });
-}
-
-// sum_i w_ip v_i over a particle's stencil of `local` (a block's gathered nodes).
-template <int Dim>
-inline Vec<Dim> interpolate(const KernelFrame<Dim>& frame, const IVec<Dim>& first_node,
-                            const LocalNodes<Dim>& local, const Vec<Dim>& x) {
-    constexpr int N = Dim + 1;
-    const Stencil<Dim> s = make_stencil(frame, x);
-    const double* in = local[0].data();
-    Vec<Dim> v = Vec<Dim>::Zero();
-    for_each_stencil_node<Dim>(s, first_node, [&](int offset, const int*, double w) {
-        for (int r = 0; r < Dim; ++r) {
-            v[r] += w * in[N * offset + r];
-        }
-    });
-    return v;
 }
 
 // Calls f(local_index, grid_data_index) for every node of a particle block's local buffer.
@@ -333,10 +300,13 @@ inline void gather_local_nodes(const std::vector<Node<Dim>>& data, const IVec<Di
 // = (4/h) (sum w v_i s^T - v_p fx^T) with s the integer node offset (Jiang et al. 2015, eq. 10;
 // Hu et al. 2018, eq. 17). The sums are separable: innermost axis first. `local` holds the grid
 // nodes (velocity, mass) after the grid update.
+// With `old` (the grid velocities before the step's forces, SolverSettings::flip) it also
+// returns sum w v_i_old in *old_velocity.
 template <int Dim>
 inline void gather_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& first_node,
                             const LocalNodes<Dim>& local, const Vec<Dim>& x, Vec<Dim>& v,
-                            Mat<Dim>& c) {
+                            Mat<Dim>& c, const LocalNodes<Dim>* old = nullptr,
+                            Vec<Dim>* old_velocity = nullptr) {
     constexpr int N = Dim + 1;
     const Stencil<Dim> s = make_stencil(frame, x);
     int l[Dim];
@@ -345,6 +315,8 @@ inline void gather_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& firs
         l[d] = s.base[d] - first[d];
     }
     const double* velocity = local[0].data();
+    const double* old_nodes = old ? (*old)[0].data() : nullptr;
+    double old_sum[Dim] = {};
     double sum[Dim] = {};
     double moment[Dim][Dim] = {};  // moment[d][r] = sum w v_r s_d
     const auto& w = s.w;
@@ -352,17 +324,25 @@ inline void gather_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& firs
         for (int i = 0; i < 3; ++i) {
             double row_sum[2] = {};
             double row_j[2] = {};
+            double row_old[2] = {};
             for (int j = 0; j < 3; ++j) {
-                const double* vi = velocity + N * ((l[0] + i) * kLocalEdge + (l[1] + j));
+                const int offset = N * ((l[0] + i) * kLocalEdge + (l[1] + j));
+                const double* vi = velocity + offset;
                 for (int r = 0; r < 2; ++r) {
                     row_sum[r] += w[1][j] * vi[r];
                     row_j[r] += (j * w[1][j]) * vi[r];
+                }
+                if (old_nodes) {
+                    for (int r = 0; r < 2; ++r) {
+                        row_old[r] += w[1][j] * old_nodes[offset + r];
+                    }
                 }
             }
             for (int r = 0; r < 2; ++r) {
                 sum[r] += w[0][i] * row_sum[r];
                 moment[0][r] += (i * w[0][i]) * row_sum[r];
                 moment[1][r] += w[0][i] * row_j[r];
+                old_sum[r] += w[0][i] * row_old[r];
             }
         }
     } else {
@@ -375,14 +355,16 @@ inline void gather_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& firs
         Packed along_i = Packed::Zero();
         Packed along_j = Packed::Zero();
         Packed along_k = Packed::Zero();
+        Packed total_old = Packed::Zero();
         const double w_k2 = 2.0 * w[2][2];
         for (int i = 0; i < 3; ++i) {
             Packed row_sum = Packed::Zero();
             Packed row_j = Packed::Zero();
             Packed row_k = Packed::Zero();
+            Packed row_old = Packed::Zero();
             for (int j = 0; j < 3; ++j) {
-                const double* v0 =
-                    velocity + N * (((l[0] + i) * kLocalEdge + (l[1] + j)) * kLocalEdge + l[2]);
+                const int offset = N * (((l[0] + i) * kLocalEdge + (l[1] + j)) * kLocalEdge + l[2]);
+                const double* v0 = velocity + offset;
                 const Node4 v1(v0 + N);
                 const Node4 v2(v0 + 2 * N);
                 const Packed a = w[2][0] * Node4(v0) + w[2][1] * v1 + w[2][2] * v2;
@@ -390,13 +372,20 @@ inline void gather_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& firs
                 row_sum += w[1][j] * a;
                 row_j += (j * w[1][j]) * a;
                 row_k += w[1][j] * b;
+                if (old_nodes) {
+                    const double* o = old_nodes + offset;
+                    row_old += w[1][j] * (w[2][0] * Node4(o) + w[2][1] * Node4(o + N) +
+                                          w[2][2] * Node4(o + 2 * N));
+                }
             }
             total += w[0][i] * row_sum;
             along_i += (i * w[0][i]) * row_sum;
             along_j += w[0][i] * row_j;
             along_k += w[0][i] * row_k;
+            total_old += w[0][i] * row_old;
         }
         for (int r = 0; r < 3; ++r) {
+            old_sum[r] = total_old[r];
             sum[r] = total[r];
             moment[0][r] = along_i[r];
             moment[1][r] = along_j[r];
@@ -406,6 +395,9 @@ inline void gather_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& firs
     const double scale = 4.0 / frame.h;
     double* vp = v.data();
     double* cp = c.data();
+    if (old_velocity) {
+        for (int r = 0; r < Dim; ++r) (*old_velocity)[r] = old_sum[r];
+    }
     for (int r = 0; r < Dim; ++r) {
         vp[r] = sum[r];
         for (int d = 0; d < Dim; ++d) {

@@ -160,6 +160,8 @@ void validate(const SoilScenario& s) {
     problems.check(n.boundary_reach >= 0.0 && n.boundary_reach <= 0.5, "numerics.boundary_reach",
                    n.boundary_reach, "", "in [0, 0.5]");
     problems.check(n.flip >= 0.0 && n.flip <= 1.0, "numerics.flip", n.flip, "", "in [0, 1]");
+    problems.check(n.min_density_ratio >= 0.0 && n.min_density_ratio < 1.0,
+                   "numerics.min_density_ratio", n.min_density_ratio, "", "in [0, 1)");
     problems.check(n.threads >= 0, "numerics.threads", n.threads, "", ">= 0");
     const SoilOutput& o = s.output;
     problems.check(positive(o.duration), "output.duration", o.duration, "s", "> 0");
@@ -302,6 +304,7 @@ SoilModel<Dim> build_soil_model(const SoilScenario& scenario) {
     settings.boundary_reach = scenario.numerics.boundary_reach;
     settings.volumetric_averaging = scenario.numerics.volumetric_averaging;
     settings.flip = scenario.numerics.flip;
+    settings.min_density_ratio = scenario.numerics.min_density_ratio;
     settings.cfl = scenario.numerics.cfl;
     settings.threads = scenario.numerics.threads;
     settings.max_time_step = scenario.output.sample_interval;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -55,6 +56,8 @@ Solver<Dim>::Solver(const SolverSettings& settings, const Material& material,
     require(s.max_time_step > 0.0, "max_time_step", s.max_time_step, "s", "> 0");
     require(s.damping >= 0.0, "damping", s.damping, "1/s", ">= 0");
     require(s.flip >= 0.0 && s.flip <= 1.0, "flip", s.flip, "", "in [0, 1]");
+    require(s.min_density_ratio >= 0.0 && s.min_density_ratio < 1.0, "min_density_ratio",
+            s.min_density_ratio, "", "in [0, 1)");
     require(s.threads >= 0, "threads", s.threads, "", ">= 0");
     require(s.reorder_interval >= 1, "reorder_interval", s.reorder_interval, "", ">= 1");
     validate(material_);
@@ -125,6 +128,7 @@ Solver<Dim>::Solver(const SolverSettings& settings, const Material& material,
         max_density_ = std::max(max_density_, particles_.mass[p] / particles_.volume[p]);
         max_speed_ = std::max(max_speed_, particles_.velocity[p].norm());
     }
+    initial_density_ = max_density_;
     threads_ = s.threads > 0 ? s.threads
                              : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     // Below about 512 particles per thread the fork-join overhead of a phase outweighs its
@@ -187,22 +191,19 @@ void Solver<Dim>::particles_to_grid(double dt) {
         for (auto& node : local) {
             node.setZero();
         }
+        detail::LocalNodes<Dim>* forces =
+            flip ? &w.force_buffers[static_cast<std::size_t>(i)] : nullptr;
+        if (forces) {
+            for (auto& node : *forces) {
+                node.setZero();
+            }
+        }
         for (int k = pb.begin; k < pb.end; ++k) {
             const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
             detail::scatter_particle<Dim>(frame, pb.first_node, dt, particles_.position[p],
                                           particles_.velocity[p], particles_.affine[p],
                                           particles_.stress[p], particles_.mass[p],
-                                          particles_.volume[p], local);
-        }
-        if (!flip) return;
-        detail::LocalNodes<Dim>& forces = w.force_buffers[static_cast<std::size_t>(i)];
-        for (auto& node : forces) {
-            node.setZero();
-        }
-        for (int k = pb.begin; k < pb.end; ++k) {
-            const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
-            detail::scatter_force<Dim>(frame, pb.first_node, dt, particles_.position[p],
-                                       particles_.stress[p], particles_.volume[p], forces);
+                                          particles_.volume[p], local, forces);
         }
     });
 }
@@ -408,6 +409,7 @@ namespace {
 // particle's new density, kg/m3.
 template <int Dim, typename Model>
 double update_stress(Particles<Dim>& particles, std::size_t p, const Model& model, double dt,
+                     double max_specific_volume,
                      std::optional<std::pair<double, double>> own_and_mean = std::nullopt) {
     Mat<Dim> c = particles.affine[p];
     double volume_ratio = 0.0;
@@ -426,7 +428,8 @@ double update_stress(Particles<Dim>& particles, std::size_t p, const Model& mode
     const Mat3 rotated = detail::corotate(particles.stress[p], l, dt);
     particles.stress[p] =
         model.update(rotated, strain_increment, particles.plastic_shear_strain[p]);
-    particles.volume[p] *= volume_ratio;
+    particles.volume[p] =
+        std::min(particles.volume[p] * volume_ratio, particles.mass[p] * max_specific_volume);
     return particles.mass[p] / particles.volume[p];
 }
 
@@ -443,6 +446,9 @@ void Solver<Dim>::grid_to_particles(double dt) {
     const detail::KernelFrame<Dim> frame{grid.origin, grid.h};
     const bool averaging = settings_.volumetric_averaging;
     const double flip = settings_.flip;
+    const double max_specific_volume = settings_.min_density_ratio > 0.0
+                                           ? 1.0 / (settings_.min_density_ratio * initial_density_)
+                                           : std::numeric_limits<double>::infinity();
     const int count = static_cast<int>(averaging ? w.blocks.size() : w.chunks.size());
     // Damping acts on the particles after the transfer, so the boundary impulses of a body at
     // rest are its full reactions.
@@ -478,14 +484,13 @@ void Solver<Dim>::grid_to_particles(double dt) {
                             detail::dual_cell<Dim>(frame, pb.first_node, particles_.position[p]));
                     }
                     // FLIP part: the particle's own velocity less the grid's before the step.
-                    const Vec<Dim> own =
-                        flip > 0.0 ? Vec<Dim>(particles_.velocity[p] -
-                                              detail::interpolate<Dim>(frame, pb.first_node, old,
-                                                                       particles_.position[p]))
-                                   : Vec<Dim>::Zero();
+                    Vec<Dim> own = particles_.velocity[p];
+                    Vec<Dim> old_grid = Vec<Dim>::Zero();
                     detail::gather_particle<Dim>(frame, pb.first_node, local,
                                                  particles_.position[p], particles_.velocity[p],
-                                                 particles_.affine[p]);
+                                                 particles_.affine[p], flip > 0.0 ? &old : nullptr,
+                                                 flip > 0.0 ? &old_grid : nullptr);
+                    own -= old_grid;
                     particles_.position[p] += dt * particles_.velocity[p];
                     if (flip > 0.0) particles_.velocity[p] += flip * own;
                     particles_.velocity[p] *= damping;
@@ -495,8 +500,8 @@ void Solver<Dim>::grid_to_particles(double dt) {
                         w.particle_jacobian[p] =
                             (Mat<Dim>::Identity() + dt * particles_.affine[p]).determinant();
                     } else {
-                        max_density =
-                            std::max(max_density, update_stress(particles_, p, model, dt));
+                        max_density = std::max(max_density, update_stress(particles_, p, model, dt,
+                                                                          max_specific_volume));
                     }
                 }
                 return std::pair(max_speed_squared, max_density);
@@ -520,9 +525,9 @@ void Solver<Dim>::grid_to_particles(double dt) {
                 for (int k = pb.begin; k < pb.end; ++k) {
                     const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
                     const double mean = means[static_cast<std::size_t>(w.particle_cell[p])];
-                    max_density = std::max(max_density,
-                                           update_stress(particles_, p, model, dt,
-                                                         std::pair(w.particle_jacobian[p], mean)));
+                    max_density = std::max(
+                        max_density, update_stress(particles_, p, model, dt, max_specific_volume,
+                                                   std::pair(w.particle_jacobian[p], mean)));
                 }
                 w.task_max[static_cast<std::size_t>(i)] = speed;
                 w.task_density[static_cast<std::size_t>(i)] = max_density;

@@ -18,6 +18,9 @@ namespace rockfall::mpm::verification {
 namespace {
 
 constexpr double g = 9.81;  // m/s2
+// Column length L0 of the collapse, m, and its soil's density, kg/m3.
+constexpr double kCollapseLength = 0.2;
+constexpr double kCollapseDensity = 1600.0;
 
 double to_radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
@@ -182,12 +185,12 @@ ColumnCollapse column_collapse(double aspect, int cells_per_length,
     if (!(aspect > 0.0) || cells_per_length < 4) {
         throw std::invalid_argument("column_collapse: aspect must be > 0 and cells >= 4");
     }
-    const double length = 0.2;
+    const double length = kCollapseLength;
     const double height = aspect * length;
     const double h = length / cells_per_length;
     Particles<2> column;
     add_box_particles<2>(column, axis_box(Vec3(0.0, -0.5, 0.0), Vec3(length, 0.5, height)), h / 2.0,
-                         1600.0);
+                         kCollapseDensity);
     SolverSettings s;
     s.threads = 1;
     s.cell_size = h;
@@ -222,7 +225,26 @@ ColumnCollapse column_collapse(double aspect, int cells_per_length,
     result.runout = (front + h / 4.0 - length) / length;
     result.time = solver.time();
     result.deposit = solver.particles().position;
+    result.deposit_mass = solver.particles().mass;
     return result;
+}
+
+double deposit_front(const ColumnCollapse& collapse, double thickness) {
+    const double length = kCollapseLength;
+    const double h = length / collapse.cells_per_length;
+    std::vector<double> area;
+    for (std::size_t i = 0; i < collapse.deposit.size(); ++i) {
+        const double x = collapse.deposit[i][0];
+        if (x < 0.0) continue;
+        const auto column = static_cast<std::size_t>(x / h);
+        if (column >= area.size()) area.resize(column + 1, 0.0);
+        area[column] += collapse.deposit_mass[i] / kCollapseDensity;
+    }
+    double front = 0.0;
+    for (std::size_t c = 0; c < area.size(); ++c) {
+        if (area[c] / h > thickness) front = static_cast<double>(c + 1) * h;
+    }
+    return (front - length) / length;
 }
 
 BlockSlide sliding_block(double angle_deg, double friction_angle_deg, double duration,

@@ -68,7 +68,7 @@ inline constexpr std::array<detail::EnumName<mpm::WallSupport>, 2> wall_support_
     {"spring", mpm::WallSupport::spring},
 }};
 
-inline const Fields<mpm::SoilNumerics, 9> soil_numerics_fields{{
+inline const Fields<mpm::SoilNumerics, 10> soil_numerics_fields{{
     {"dimension", &mpm::SoilNumerics::dimension, "", detail::closed(2, 3)},
     {"cell_size", &mpm::SoilNumerics::cell_size, "m", detail::positive()},
     {"particles_per_cell", &mpm::SoilNumerics::particles_per_cell, "", detail::closed(1, 8)},
@@ -77,6 +77,7 @@ inline const Fields<mpm::SoilNumerics, 9> soil_numerics_fields{{
     {"boundary_reach", &mpm::SoilNumerics::boundary_reach, "", detail::closed(0.0, 0.5)},
     {"volumetric_averaging", &mpm::SoilNumerics::volumetric_averaging, "", {}},
     {"flip", &mpm::SoilNumerics::flip, "", detail::closed(0.0, 1.0)},
+    {"min_density_ratio", &mpm::SoilNumerics::min_density_ratio, "", Range{0.0, 1.0, false, true}},
     {"threads", &mpm::SoilNumerics::threads, "", detail::non_negative()},
 }};
 

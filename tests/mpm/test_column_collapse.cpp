@@ -76,3 +76,26 @@ TEST_CASE("Column collapse: APIC's runout depends on the time step, FLIP's much 
     CHECK(apic_short / apic < 0.85);
     CHECK(std::abs(flip_short / flip - 1.0) < 0.05);
 }
+
+TEST_CASE("Deposit front: the far edge of the last grid column thicker than the threshold",
+          "[mpm][verification]") {
+    // 60 columns 0.01 m wide (L0 / h = 20) of linearly decreasing thickness 0.1 (1 - c / 60) m
+    // at 1600 kg/m3, two particles per column, and one stray particle behind the back wall.
+    rockfall::mpm::verification::ColumnCollapse deposit;
+    deposit.cells_per_length = 20;
+    const double h = 0.01;
+    for (int c = 0; c < 60; ++c) {
+        const double mass = 1600.0 * h * 0.1 * (1.0 - c / 60.0);
+        for (int k = 0; k < 2; ++k) {
+            deposit.deposit.emplace_back((c + 0.25 + 0.5 * k) * h, 0.01);
+            deposit.deposit_mass.push_back(0.5 * mass);
+        }
+    }
+    deposit.deposit.emplace_back(-0.005, 0.0);
+    deposit.deposit_mass.push_back(100.0);
+    using rockfall::mpm::verification::deposit_front;
+    // Thicker than 0.0505 m: columns 0..29, front 0.30 m; than 0.0205 m: 0..47, front 0.48 m.
+    CHECK_THAT(deposit_front(deposit, 0.0505), Catch::Matchers::WithinAbs(0.5, 1e-12));
+    CHECK_THAT(deposit_front(deposit, 0.0205), Catch::Matchers::WithinAbs(1.4, 1e-12));
+    CHECK_THAT(deposit_front(deposit, 1.0), Catch::Matchers::WithinAbs(-1.0, 1e-12));
+}

@@ -84,14 +84,21 @@ TEST_CASE("Soil grid: boundary_reach is validated and reaches the solver", "[mpm
                                        "numerics.boundary_reach = 0.6: must be in [0, 0.5]"));
 }
 
-TEST_CASE("Soil numerics: flip is validated and reaches the solver", "[mpm][soil]") {
+TEST_CASE("Soil numerics: flip and min_density_ratio are validated and reach the solver",
+          "[mpm][soil]") {
     SoilScenario s = quick_2d(0.2, true);
     CHECK(detail::build_soil_model<2>(s).solver->settings().flip == 0.0);
     s.numerics.flip = 0.99;
     CHECK(detail::build_soil_model<2>(s).solver->settings().flip == 0.99);
+    s.numerics.min_density_ratio = 0.5;
+    CHECK(detail::build_soil_model<2>(s).solver->settings().min_density_ratio == 0.5);
     s.numerics.flip = -0.1;
     CHECK_THROWS_WITH(validate(s),
                       Catch::Matchers::Contains("numerics.flip = -0.1: must be in [0, 1]"));
+    s.numerics.flip = 0.0;
+    s.numerics.min_density_ratio = 1.0;
+    CHECK_THROWS_WITH(validate(s), Catch::Matchers::Contains(
+                                       "numerics.min_density_ratio = 1: must be in [0, 1)"));
 }
 
 TEST_CASE("Soil spring-backed wall: stiff as the rigid wall; at rest displaced by load / k",

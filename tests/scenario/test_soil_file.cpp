@@ -186,14 +186,18 @@ TEST_CASE("soil file: grid placement keys", "[scenario][soil]") {
     CHECK_THAT(std::string(error.what()), Contains("bad_grid.toml:4"));
 }
 
-TEST_CASE("soil file: numerics.flip", "[scenario][soil]") {
+TEST_CASE("soil file: numerics.flip and min_density_ratio", "[scenario][soil]") {
     CHECK(rockfall::scenario::parse_soil_scenario("", "defaults.toml").scenario.numerics.flip ==
           0.0);
     CHECK(rockfall::scenario::parse_soil_scenario("[numerics]\nflip = 0.99\n", "flip.toml")
               .scenario.numerics.flip == 0.99);
-    const ScenarioError error = parse_error("[numerics]\nflip = 1.2\n", "bad_flip.toml");
-    REQUIRE(error.problems().size() == 1);
+    const ScenarioError error =
+        parse_error("[numerics]\nflip = 1.2\nmin_density_ratio = 1\n", "bad_flip.toml");
+    REQUIRE(error.problems().size() == 2);
     expect_at(error, "numerics.flip", 2, {"1.2", "must be in [0, 1]"});
+    expect_at(error, "numerics.min_density_ratio", 3, {"1", "must be in [0, 1)"});
+    CHECK(rockfall::scenario::parse_soil_scenario("[numerics]\nmin_density_ratio = 0.5\n", "f.toml")
+              .scenario.numerics.min_density_ratio == 0.5);
 }
 
 TEST_CASE("soil file: spring-backed wall keys", "[scenario][soil]") {

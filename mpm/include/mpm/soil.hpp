@@ -105,6 +105,9 @@ struct SoilNumerics {
     /// (default): APIC, whose per-step smoothing makes a flow's dissipation depend on the time
     /// step; 0.99 keeps 1 % of it.
     double flip = 0.0;
+    /// Density floor of a particle as a fraction of the soil's density, [0, 1)
+    /// (SolverSettings::min_density_ratio). 0 (default): none.
+    double min_density_ratio = 0.0;
     /// Worker threads (>= 0; 0 = all available).
     int threads = 0;
 };

@@ -88,6 +88,9 @@ struct SolverSettings {
     /// smooths the velocity field's non-affine part, a loss per step, so with alpha = 0 a flow's
     /// dissipation grows as the time step shrinks (docs/soil.md); alpha keeps 1 - alpha of it.
     double flip = 0.0;
+    /// Lower bound of a particle's density as a fraction of the largest initial density, [0, 1)
+    /// (0 = none): a particle's volume never grows past mass / (ratio rho_0).
+    double min_density_ratio = 0.0;
 };
 
 /// One zero vector per boundary group (Eigen vectors are not zeroed by default).
@@ -187,6 +190,8 @@ class Solver {
     int threads_ = 1;
     double max_speed_ = 0.0;
     double max_density_ = 0.0;
+    // Largest particle density at construction, kg/m3 (SolverSettings::min_density_ratio).
+    double initial_density_ = 0.0;
 };
 
 extern template class Solver<2>;

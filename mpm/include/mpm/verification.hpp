@@ -84,9 +84,18 @@ struct ColumnCollapse {
     /// Simulated time, s, and steps in which particles were pulled back into the domain.
     double time = 0.0;
     int clamped_steps = 0;
-    /// Final particle positions (x, z), m.
+    /// Final particle positions (x, z), m, and masses per metre of width, kg/m.
     std::vector<Vec<2>> deposit;
+    std::vector<double> deposit_mass;
 };
+
+/// Runout (x_f - L0) / L0 to the front x_f of the part of the deposit thicker than `thickness`
+/// (m): per h-wide column of the grid the deposit's mass over (1600 kg/m3 h), the thickness at
+/// the column's initial density (a particle's own volume also counts the dilation of soil that
+/// separated), x_f the far edge of the farthest column above `thickness`. Unlike
+/// ColumnCollapse::runout (the farthest particle) it ignores a tail thinner than `thickness`,
+/// which a finer grid resolves further.
+double deposit_front(const ColumnCollapse& collapse, double thickness);
 
 /// The collapse's transfer settings (SolverSettings::cfl and flip).
 struct CollapseNumerics {
