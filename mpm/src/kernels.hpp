@@ -94,9 +94,10 @@ inline IVec<Dim> block_local_coords(int j) {
 // w_ip [m v + Q (x_i - x_p); m] with Q = m C - dt V D^-1 sigma, D^-1 = 4/h^2 (Hu et al. 2018,
 // eq. 29). With x_i - x_p = h (s - fx) for the integer node offset s, the bracket is
 // q0 + h Q s, advanced incrementally along each axis.
-// With a `forces` buffer (the FLIP update, SolverSettings::flip) the stress part alone,
-// -w_ip dt V D^-1 sigma (x_i - x_p), is added to it as well (mass lane 0).
-template <int Dim>
+// With kForces (the FLIP update, SolverSettings::flip) the stress part alone,
+// -w_ip dt V D^-1 sigma (x_i - x_p), is added to the `forces` buffer as well (mass lane 0); a
+// template flag, so that the APIC path carries no test in its loops.
+template <int Dim, bool kForces = false>
 inline void scatter_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& first_node, double dt,
                              const Vec<Dim>& x, const Vec<Dim>& v, const Mat<Dim>& c,
                              const Mat3& stress, double m, double volume, LocalNodes<Dim>& local,
@@ -156,7 +157,7 @@ inline void scatter_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& fir
                 for (int r = 0; r < N; ++r) {
                     node[r] += wij * (q0[r] + i * step[0][r] + j * step[1][r]);
                 }
-                if (force_out) {
+                if constexpr (kForces) {
                     for (int r = 0; r < Dim; ++r) {
                         force_out[offset + r] +=
                             wij * (force_q0[r] + i * force_step[0][r] + j * force_step[1][r]);
@@ -187,7 +188,7 @@ inline void scatter_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& fir
                     (wij * s.w[2][1]) * (qij + along_k);
                 Eigen::Map<Packed, Eigen::Aligned16>(node + 2 * N) +=
                     (wij * s.w[2][2]) * (qij + 2.0 * along_k);
-                if (force_out) {
+                if constexpr (kForces) {
                     const Packed fij = force_base + i * force_i + j * force_j;
                     double* f = force_out + offset;
                     Eigen::Map<Packed, Eigen::Aligned16>(f) += (wij * s.w[2][0]) * fij;
@@ -300,9 +301,9 @@ inline void gather_local_nodes(const std::vector<Node<Dim>>& data, const IVec<Di
 // = (4/h) (sum w v_i s^T - v_p fx^T) with s the integer node offset (Jiang et al. 2015, eq. 10;
 // Hu et al. 2018, eq. 17). The sums are separable: innermost axis first. `local` holds the grid
 // nodes (velocity, mass) after the grid update.
-// With `old` (the grid velocities before the step's forces, SolverSettings::flip) it also
-// returns sum w v_i_old in *old_velocity.
-template <int Dim>
+// With kOld (the grid velocities before the step's forces in `old`, SolverSettings::flip) it
+// also returns sum w v_i_old in *old_velocity.
+template <int Dim, bool kOld = false>
 inline void gather_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& first_node,
                             const LocalNodes<Dim>& local, const Vec<Dim>& x, Vec<Dim>& v,
                             Mat<Dim>& c, const LocalNodes<Dim>* old = nullptr,
@@ -332,7 +333,7 @@ inline void gather_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& firs
                     row_sum[r] += w[1][j] * vi[r];
                     row_j[r] += (j * w[1][j]) * vi[r];
                 }
-                if (old_nodes) {
+                if constexpr (kOld) {
                     for (int r = 0; r < 2; ++r) {
                         row_old[r] += w[1][j] * old_nodes[offset + r];
                     }
@@ -372,7 +373,7 @@ inline void gather_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& firs
                 row_sum += w[1][j] * a;
                 row_j += (j * w[1][j]) * a;
                 row_k += w[1][j] * b;
-                if (old_nodes) {
+                if constexpr (kOld) {
                     const double* o = old_nodes + offset;
                     row_old += w[1][j] * (w[2][0] * Node4(o) + w[2][1] * Node4(o + N) +
                                           w[2][2] * Node4(o + 2 * N));
@@ -395,7 +396,7 @@ inline void gather_particle(const KernelFrame<Dim>& frame, const IVec<Dim>& firs
     const double scale = 4.0 / frame.h;
     double* vp = v.data();
     double* cp = c.data();
-    if (old_velocity) {
+    if constexpr (kOld) {
         for (int r = 0; r < Dim; ++r) (*old_velocity)[r] = old_sum[r];
     }
     for (int r = 0; r < Dim; ++r) {

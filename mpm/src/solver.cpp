@@ -200,10 +200,17 @@ void Solver<Dim>::particles_to_grid(double dt) {
         }
         for (int k = pb.begin; k < pb.end; ++k) {
             const auto p = static_cast<std::size_t>(w.order[static_cast<std::size_t>(k)]);
-            detail::scatter_particle<Dim>(frame, pb.first_node, dt, particles_.position[p],
-                                          particles_.velocity[p], particles_.affine[p],
-                                          particles_.stress[p], particles_.mass[p],
-                                          particles_.volume[p], local, forces);
+            if (forces) {
+                detail::scatter_particle<Dim, true>(
+                    frame, pb.first_node, dt, particles_.position[p], particles_.velocity[p],
+                    particles_.affine[p], particles_.stress[p], particles_.mass[p],
+                    particles_.volume[p], local, forces);
+            } else {
+                detail::scatter_particle<Dim>(frame, pb.first_node, dt, particles_.position[p],
+                                              particles_.velocity[p], particles_.affine[p],
+                                              particles_.stress[p], particles_.mass[p],
+                                              particles_.volume[p], local);
+            }
         }
     });
 }
@@ -484,15 +491,20 @@ void Solver<Dim>::grid_to_particles(double dt) {
                             detail::dual_cell<Dim>(frame, pb.first_node, particles_.position[p]));
                     }
                     // FLIP part: the particle's own velocity less the grid's before the step.
-                    Vec<Dim> own = particles_.velocity[p];
-                    Vec<Dim> old_grid = Vec<Dim>::Zero();
-                    detail::gather_particle<Dim>(frame, pb.first_node, local,
-                                                 particles_.position[p], particles_.velocity[p],
-                                                 particles_.affine[p], flip > 0.0 ? &old : nullptr,
-                                                 flip > 0.0 ? &old_grid : nullptr);
-                    own -= old_grid;
-                    particles_.position[p] += dt * particles_.velocity[p];
-                    if (flip > 0.0) particles_.velocity[p] += flip * own;
+                    if (flip > 0.0) {
+                        const Vec<Dim> own = particles_.velocity[p];
+                        Vec<Dim> old_grid;
+                        detail::gather_particle<Dim, true>(
+                            frame, pb.first_node, local, particles_.position[p],
+                            particles_.velocity[p], particles_.affine[p], &old, &old_grid);
+                        particles_.position[p] += dt * particles_.velocity[p];
+                        particles_.velocity[p] += flip * (own - old_grid);
+                    } else {
+                        detail::gather_particle<Dim>(frame, pb.first_node, local,
+                                                     particles_.position[p], particles_.velocity[p],
+                                                     particles_.affine[p]);
+                        particles_.position[p] += dt * particles_.velocity[p];
+                    }
                     particles_.velocity[p] *= damping;
                     max_speed_squared =
                         std::max(max_speed_squared, particles_.velocity[p].squaredNorm());
