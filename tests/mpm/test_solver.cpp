@@ -80,7 +80,9 @@ TEST_CASE("Free fall: every particle gains g t, momentum balances gravity", "[mp
     CHECK_THAT(solver.particles().momentum()[1], WithinRel(-mass * 9.81 * 0.02, 1e-12));
 }
 
-TEST_CASE("Linear momentum is conserved by internal forces", "[mpm][solver]") {
+TEST_CASE("Linear momentum is conserved by internal forces (APIC and FLIP)", "[mpm][solver]") {
+    const double flip = GENERATE(0.0, 0.99);
+    CAPTURE(flip);
     Particles<3> p;
     add_box_particles<3>(p, axis_box(Vec3(0.5, 0.5, 0.5), Vec3(1.1, 0.9, 1.3)), 0.05, 2000.0);
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -93,6 +95,7 @@ TEST_CASE("Linear momentum is conserved by internal forces", "[mpm][solver]") {
     s.cell_size = 0.1;
     s.domain_max = Vec3(2.0, 2.0, 2.0);
     s.gravity = Vec3::Zero();
+    s.flip = flip;
     Solver<3> solver(s, DruckerPrager{}, std::move(p), {});
     for (int i = 0; i < 30; ++i) {
         solver.step(solver.stable_time_step());
@@ -100,9 +103,12 @@ TEST_CASE("Linear momentum is conserved by internal forces", "[mpm][solver]") {
     CHECK((solver.particles().momentum() - momentum).norm() < 1e-10 * momentum.norm());
 }
 
-TEST_CASE("Results do not depend on the thread count", "[mpm][solver]") {
-    auto run = [](int threads) {
+TEST_CASE("Results do not depend on the thread count (APIC and FLIP)", "[mpm][solver]") {
+    const double flip = GENERATE(0.0, 0.95);
+    CAPTURE(flip);
+    auto run = [flip](int threads) {
         SolverSettings s;
+        s.flip = flip;
         s.cell_size = 0.1;
         s.domain_min = Vec3(-0.5, -0.5, -0.5);
         s.domain_max = Vec3(2.0, 1.5, 2.0);
