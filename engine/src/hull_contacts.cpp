@@ -5,6 +5,12 @@
 #include <BulletCollision/CollisionDispatch/btActivatingCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace rockfall::engine {
 namespace {
@@ -12,6 +18,27 @@ namespace {
 // Perturbed queries at the first step of a contact: Bullet's default count (three rotations
 // about the separating normal).
 constexpr int kPerturbations = 3;
+
+// The largest distance from a shape's origin to a point of it (margin included), m.
+double reach_of(const btCollisionShape& shape) {
+    btVector3 centre;
+    btScalar radius = 0.0;
+    shape.getBoundingSphere(centre, radius);
+    return centre.length() + radius;
+}
+
+// How far any point of the second body, within `reach` of its origin, can have moved in the first
+// body's frame between the relative transforms `before` and `now` (each the second body's
+// transform in the first's frame), m: the translation plus the chord of the rotation between
+// them at that reach. The chord of a rotation by theta is 2 sin(theta / 2) = sqrt(3 - trace).
+double drift_bound(const btTransform& before, const btTransform& now, double reach) {
+    const btMatrix3x3& a = before.getBasis();
+    const btMatrix3x3& b = now.getBasis();
+    double trace = 0.0;  // trace of b a^T
+    for (int i = 0; i < 3; ++i) trace += a[i].dot(b[i]);
+    const double chord = std::sqrt(std::max(0.0, 3.0 - trace));
+    return (now.getOrigin() - before.getOrigin()).length() + chord * reach;
+}
 
 // Two Bullet convex-convex algorithms sharing one manifold: the plain one every step, the
 // perturbing one in addition at the step a contact appears.
@@ -27,7 +54,11 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
           plain_(std::make_unique<btConvexConvexAlgorithm>(manifold_, info, body0, body1,
                                                            penetration_solver, 0, 0)),
           perturbing_(std::make_unique<btConvexConvexAlgorithm>(
-              manifold_, info, body0, body1, penetration_solver, kPerturbations, 3)) {}
+              manifold_, info, body0, body1, penetration_solver, kPerturbations, 3)),
+          moving_first_(reach_of(*body0->getCollisionShape()) <
+                        reach_of(*body1->getCollisionShape())),
+          reach_(std::min(reach_of(*body0->getCollisionShape()),
+                          reach_of(*body1->getCollisionShape()))) {}
 
     ~HullContactAlgorithm() override { m_dispatcher->releaseManifold(manifold_); }
     HullContactAlgorithm(const HullContactAlgorithm&) = delete;
@@ -37,9 +68,19 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
                           const btCollisionObjectWrapper* body1, const btDispatcherInfo& info,
                           btManifoldResult* result) override {
         result->setPersistentManifold(manifold_);
-        const bool was_empty = manifold_->getNumContacts() == 0;
+        const bool touching = manifold_->getNumContacts() > 0;
+        if (!touching) {
+            // Apart: while the pair stays farther apart than the breaking threshold the plain
+            // query adds nothing, and the gap at the last measurement says for how long.
+            const btTransform relative = relative_transform(body0, body1);
+            if (gap_ > 0.0 && drift_bound(measured_at_, relative, reach_) < gap_) return;
+            measured_at_ = relative;
+            gap_ = separation(body0, body1) - manifold_->getContactBreakingThreshold();
+            if (gap_ > 0.0) return;
+        }
+        gap_ = 0.0;
         plain_->processCollision(body0, body1, info, result);
-        if (was_empty && manifold_->getNumContacts() > 0) {
+        if (!touching && manifold_->getNumContacts() > 0) {
             // A new contact: find the rest of a touching face or edge now. Pairs that stay
             // apart (most pairs the broadphase reports) never pay for the perturbed queries.
             perturbing_->processCollision(body0, body1, info, result);
@@ -60,6 +101,30 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
     }
 
   private:
+    // The body with the smaller reach in the other's frame.
+    btTransform relative_transform(const btCollisionObjectWrapper* body0,
+                                   const btCollisionObjectWrapper* body1) const {
+        const btTransform& t0 = body0->getWorldTransform();
+        const btTransform& t1 = body1->getWorldTransform();
+        return moving_first_ ? t1.inverseTimes(t0) : t0.inverseTimes(t1);
+    }
+
+    // Distance between the two shapes (margins included) by GJK, m; zero when they overlap
+    // (GJK then has no answer without the penetration solver, and the plain query decides).
+    static double separation(const btCollisionObjectWrapper* body0,
+                             const btCollisionObjectWrapper* body1) {
+        const auto* shape0 = static_cast<const btConvexShape*>(body0->getCollisionShape());
+        const auto* shape1 = static_cast<const btConvexShape*>(body1->getCollisionShape());
+        btVoronoiSimplexSolver simplex;
+        btGjkPairDetector gjk(shape0, shape1, &simplex, nullptr);
+        btGjkPairDetector::ClosestPointInput input;
+        input.m_transformA = body0->getWorldTransform();
+        input.m_transformB = body1->getWorldTransform();
+        btPointCollector closest;
+        gjk.getClosestPoints(input, closest, nullptr);
+        return closest.m_hasResult ? std::max<double>(0.0, closest.m_distance) : 0.0;
+    }
+
     // A hull on a box's face: every vertex on the face, not only GJK's one (face_contacts).
     void add_face_contacts(const btCollisionObjectWrapper* body0,
                            const btCollisionObjectWrapper* body1) {
@@ -75,6 +140,13 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
     btPersistentManifold* manifold_;
     std::unique_ptr<btConvexConvexAlgorithm> plain_;
     std::unique_ptr<btConvexConvexAlgorithm> perturbing_;
+    // Separation caching: which body's reach bounds the drift, that reach (m), the relative
+    // transform when the gap was measured, and how far beyond the breaking threshold the pair
+    // was then (m; zero when unknown or touching).
+    bool moving_first_ = false;
+    double reach_ = 0.0;
+    btTransform measured_at_;
+    double gap_ = 0.0;
 };
 
 }  // namespace

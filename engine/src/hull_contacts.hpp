@@ -8,6 +8,16 @@
 // every step with fewer than three points (also for pairs that are apart) doubles the cost of
 // a tumbling rock. This algorithm runs plain GJK every step and perturbs only in the step where
 // a contact appears in an empty manifold.
+//
+// Separation caching (temporal coherence, as Bullet's btConvexSeparatingDistanceUtil): most
+// pairs the broadphase reports in a pile are apart (a 500-cube heap: about two in three), yet
+// each paid a GJK query per step. A pair found apart has its gap measured by GJK (the distance
+// beyond the contact breaking threshold) and the relative transform kept; until any point of the
+// smaller body can have moved that far in the other's frame (the translation plus the rotation's
+// chord at the body's reach) the pair is not queried: no contact can have appeared, so the skip
+// is exact. Touching pairs are queried every step: their points jitter by more than 1e-3 of a
+// rock's size per step (tried: keeping their points until they moved 5 % or 25 % of the breaking
+// threshold skipped 0.2 % and 1.2 % of their queries).
 
 #include <btBulletCollisionCommon.h>
 
