@@ -54,11 +54,12 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
           plain_(std::make_unique<btConvexConvexAlgorithm>(manifold_, info, body0, body1,
                                                            penetration_solver, 0, 0)),
           perturbing_(std::make_unique<btConvexConvexAlgorithm>(
-              manifold_, info, body0, body1, penetration_solver, kPerturbations, 3)),
-          moving_first_(reach_of(*body0->getCollisionShape()) <
-                        reach_of(*body1->getCollisionShape())),
-          reach_(std::min(reach_of(*body0->getCollisionShape()),
-                          reach_of(*body1->getCollisionShape()))) {}
+              manifold_, info, body0, body1, penetration_solver, kPerturbations, 3)) {
+        const double reach0 = reach_of(*body0->getCollisionShape());
+        const double reach1 = reach_of(*body1->getCollisionShape());
+        moving_first_ = reach0 < reach1;
+        reach_ = std::min(reach0, reach1);
+    }
 
     ~HullContactAlgorithm() override { m_dispatcher->releaseManifold(manifold_); }
     HullContactAlgorithm(const HullContactAlgorithm&) = delete;

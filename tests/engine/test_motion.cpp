@@ -146,7 +146,7 @@ TEST_CASE("a slab spinning down onto the flat meets it with its end, not through
     // (engine/src/hull_contacts.hpp): here the gap closes by the spin (the end sweeps down at
     // about 3 m/s) while the centre has hardly fallen, so a bound that missed the rotation would
     // let the end through the surface. Each step the end can sink by at most its speed times dt
-    // before the contact acts.
+    // before the contact acts; 1 mm more is slack.
     const double dt = 1e-3;
     const double spin = 20.0;  // rad/s about the y axis
     engine::Material material;
@@ -174,5 +174,5 @@ TEST_CASE("a slab spinning down onto the flat meets it with its end, not through
     INFO("touched at " << touched << " s, lowest vertex " << lowest << " m");
     // Far sooner than a free fall of 0.04 m (0.09 s): the spin brought the end down.
     CHECK(touched < 0.05);
-    CHECK(lowest > -(end_speed + 1.0) * dt);
+    CHECK(lowest > -(end_speed * dt + 1e-3));
 }
