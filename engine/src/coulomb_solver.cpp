@@ -51,6 +51,11 @@ void CoulombSolver::convertContacts(btPersistentManifold** manifolds, int manifo
     // order from the pool after this, so the iterations see no friction row.
     point_friction_rows_ = m_tmpSolverContactFrictionConstraintPool.size();
     m_tmpSolverContactFrictionConstraintPool.resizeNoInitialize(0);
+    // The rolling-resistance rows are solved by bound_rolling_resistance alone: Bullet's pass
+    // over them (bounded by min(mu_r r N, mu_r r), then solved again by ours) is hidden the
+    // same way.
+    rolling_rows_ = m_tmpSolverContactRollingFrictionConstraintPool.size();
+    m_tmpSolverContactRollingFrictionConstraintPool.resizeNoInitialize(0);
 }
 
 void CoulombSolver::aim_restitution_at_touch(const btContactSolverInfo& info) {
@@ -89,43 +94,37 @@ btScalar CoulombSolver::solveSingleIteration(int iteration, btCollisionObject** 
     const btScalar residual = btSequentialImpulseConstraintSolver::solveSingleIteration(
         iteration, bodies, body_count, manifolds, manifold_count, constraints, constraint_count,
         info, debug_drawer);
-    release_unloaded(m_tmpSolverContactRollingFrictionConstraintPool);
-    bound_rolling_resistance();
-    return std::max(residual, friction);
+    const btScalar rolling = bound_rolling_resistance();
+    return std::max({residual, friction, rolling});
 }
 
-void CoulombSolver::release_unloaded(btConstraintArray& rows) {
-    for (int i = 0; i < rows.size(); ++i) {
-        btSolverConstraint& row = rows[i];
-        // m_frictionIndex of a friction row is the index of its point's normal row.
-        const btScalar normal =
-            m_tmpSolverContactConstraintPool[row.m_frictionIndex].m_appliedImpulse;
-        if (normal <= 0.0 && row.m_appliedImpulse != 0.0) {
-            // Solving the row with both limits at zero takes its whole impulse back.
-            row.m_lowerLimit = 0.0;
-            row.m_upperLimit = 0.0;
-            resolveSingleConstraintRowGeneric(m_tmpSolverBodyPool[row.m_solverBodyIdA],
-                                              m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
-        }
-    }
-}
-
-void CoulombSolver::bound_rolling_resistance() {
+btScalar CoulombSolver::bound_rolling_resistance() {
+    btScalar residual = 0.0;
     btConstraintArray& rows = m_tmpSolverContactRollingFrictionConstraintPool;
+    rows.resizeNoInitialize(rolling_rows_);
     for (int i = 0; i < rows.size(); ++i) {
         btSolverConstraint& row = rows[i];
+        // m_frictionIndex of a rolling row is the index of its point's normal row.
         const btScalar normal =
             m_tmpSolverContactConstraintPool[row.m_frictionIndex].m_appliedImpulse;
-        if (normal <= 0.0) {
+        if (normal <= 0.0 && row.m_appliedImpulse == 0.0) {
             continue;
         }
         // The documented law: angular impulse up to mu_r r times the normal impulse
-        // (m_friction is the length mu_r r), with no cap at m_friction itself.
-        row.m_lowerLimit = -row.m_friction * normal;
-        row.m_upperLimit = row.m_friction * normal;
-        resolveSingleConstraintRowGeneric(m_tmpSolverBodyPool[row.m_solverBodyIdA],
-                                          m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+        // (m_friction is the length mu_r r), with no cap at m_friction itself; a point without
+        // normal impulse has both limits at zero, and solving the row takes its impulse back.
+        const btScalar bound = normal > 0.0 ? row.m_friction * normal : 0.0;
+        row.m_lowerLimit = -bound;
+        row.m_upperLimit = bound;
+        // Counted in the iteration's residual, as Bullet counts its own pass over these rows
+        // (the iterations stop early once no row changes a velocity by more than 1e-4 m/s).
+        const btScalar change =
+            resolveSingleConstraintRowGeneric(m_tmpSolverBodyPool[row.m_solverBodyIdA],
+                                              m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+        residual = std::max(residual, change * change);
     }
+    rows.resizeNoInitialize(0);
+    return residual;
 }
 
 void CoulombSolver::disable_point_friction() {
@@ -147,12 +146,12 @@ void CoulombSolver::build_patches(btPersistentManifold** manifolds, int manifold
                                   const btContactSolverInfo& info) {
     patches_.clear();
     // Bullet adds the normal rows manifold by manifold, each point that is close enough.
-    const int rows = m_tmpSolverContactConstraintPool.size();
+    const int row_total = m_tmpSolverContactConstraintPool.size();
     int row = 0;
-    for (int m = 0; m < manifold_count && row < rows; ++m) {
+    for (int m = 0; m < manifold_count && row < row_total; ++m) {
         btPersistentManifold& manifold = *manifolds[m];
         const int first = row;
-        for (int j = 0; j < manifold.getNumContacts() && row < rows; ++j) {
+        for (int j = 0; j < manifold.getNumContacts() && row < row_total; ++j) {
             if (m_tmpSolverContactConstraintPool[row].m_originalContactPoint ==
                 &manifold.getContactPoint(j)) {
                 ++row;
@@ -300,6 +299,7 @@ double CoulombSolver::impulse_to_stop(const btSolverConstraint& row) const {
 btScalar CoulombSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int body_count,
                                                       const btContactSolverInfo& info) {
     m_tmpSolverContactFrictionConstraintPool.resizeNoInitialize(point_friction_rows_);
+    m_tmpSolverContactRollingFrictionConstraintPool.resizeNoInitialize(rolling_rows_);
     report_patches();
     return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, body_count,
                                                                               info);

@@ -12,16 +12,16 @@ namespace rockfall::engine {
 // impulse is positive; when a point's normal impulse falls to zero in a later iteration (the
 // load moves to other points of a face), its friction impulse stays and acts without any
 // normal force. A block sliding on a 30 degree incline then accelerated 4 % (mu = 0.3) to 16 %
-// (mu = 0.5) below g (sin t - mu cos t). After each iteration this solver removes the
-// rolling-friction impulses of points that carry no normal impulse; the sliding friction is the
-// patch's below, bounded by the patch's whole normal impulse.
+// (mu = 0.5) below g (sin t - mu cos t). In each iteration this solver takes back the
+// rolling-resistance impulses of points that carry no normal impulse; the sliding friction is
+// the patch's below, bounded by the patch's whole normal impulse.
 //
 // Bullet also caps each rolling-friction row at its coefficient (a length, mu_r r) times one
 // unit of impulse, whatever the normal impulse: at an impact, where the normal impulse is
 // tens of N s in one step, the rolling resistance all but vanished (a 0.2 m sphere kept 99.8 %
-// of its spin through a landing that the law mu_r r N slows by 7 rad/s). After Bullet's pass
-// this solver solves each rolling row again with the law's bound mu_r r times its point's
-// normal impulse.
+// of its spin through a landing that the law mu_r r N slows by 7 rad/s). This solver hides the
+// rolling rows from Bullet's iterations and solves each, after Bullet's pass over the normal
+// rows, with the law's bound mu_r r times its point's normal impulse (zero without one).
 //
 // Bullet bounds each point's friction by that point's normal impulse, and the iterative
 // solver spreads a face's normal impulse over its points arbitrarily (one corner one step,
@@ -62,7 +62,6 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
         double twist_radius = 0.0;  // m
     };
 
-    void release_unloaded(btConstraintArray& rows);
     void disable_point_friction();
     void build_patches(btPersistentManifold** manifolds, int manifold_count,
                        const btContactSolverInfo& info);
@@ -72,12 +71,14 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
     btScalar solve_patches();
     double impulse_to_stop(const btSolverConstraint& row) const;
     void report_patches();
-    void bound_rolling_resistance();
+    btScalar bound_rolling_resistance();
     void aim_restitution_at_touch(const btContactSolverInfo& info);
 
     std::vector<Patch> patches_;
     // Bullet's point-friction rows of the current group, hidden from its iterations.
     int point_friction_rows_ = 0;
+    // Bullet's rolling-resistance rows of the current group, likewise hidden.
+    int rolling_rows_ = 0;
 };
 
 }  // namespace rockfall::engine

@@ -128,6 +128,24 @@ TEST_CASE("Figure 5 as SVG: well-formed, one marker series per shape in the lege
     CHECK_THAT(svg, Contains("rate of velocity change V' = (b - a) / a, toe to 4 m (-)"));
 }
 
+TEST_CASE("a shape none of whose rocks crossed the stations keeps its legend entry, n = 0",
+          "[report][stations][svg]") {
+    StationSet set = made_up_set();
+    // The slabs stop between the toe and 4 m.
+    for (db::RockStations& r : set.rocks) {
+        if (r.shape == "planar") r.stations[1] = not_reached(4.0);
+    }
+    const MotionTrend trend = velocity_change_trend(set);
+    REQUIRE(trend.shapes.size() == 3);
+    CHECK(trend.shapes[2].shape == "planar");
+    CHECK(trend.shapes[2].x.empty());
+    CHECK_FALSE(trend.shapes[2].fit);
+    CHECK(trend.all.x.size() == 12);
+    const std::string svg = checked_svg(velocity_change_figure({trend}, "Fig. 5"));
+    CHECK(legend_entries(svg, "planar (n = 0)") == 1);
+    CHECK(legend_entries(svg, "sphere (n = 6)") == 1);
+}
+
 TEST_CASE("Figure 6 as SVG: with two databases, series per database and shape, a line each",
           "[report][stations][svg]") {
     StationSet other = made_up_set();
