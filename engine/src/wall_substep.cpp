@@ -60,8 +60,13 @@ WallContactAt wall_contact_at(const shapes::OrientedBox& wall, const WallRock& r
         track.step = fine_step(rock.law, speed, steps_per_contact, coarse_dt);
         track.start = time;
         track.duration = rock.law.longest_contact_duration(speed);
+        track.speed = speed;
     } else if (rock.rigid_resting &&
                time - track.start > kRestingContactDurations * track.duration) {
+        at.kind = WallContactAt::Kind::resting;
+        return at;
+    }
+    if (rock.rigid_resting && overlap->depth > track.speed * track.duration) {
         at.kind = WallContactAt::Kind::resting;
         return at;
     }
