@@ -61,12 +61,10 @@ WallContactAt wall_contact_at(const shapes::OrientedBox& wall, const WallRock& r
         track.start = time;
         track.duration = rock.law.longest_contact_duration(speed);
         track.speed = speed;
-    } else if (rock.rigid_resting &&
-               time - track.start > kRestingContactDurations * track.duration) {
-        at.kind = WallContactAt::Kind::resting;
-        return at;
     }
-    if (rock.rigid_resting && overlap->depth > track.speed * track.duration) {
+    // Held against the wall: longer than an impact lasts, or deeper than one reaches.
+    if (rock.rigid_resting && (time - track.start > kRestingContactDurations * track.duration ||
+                               overlap->depth > track.speed * track.duration)) {
         at.kind = WallContactAt::Kind::resting;
         return at;
     }
