@@ -59,16 +59,17 @@ class World {
     // Takes it out of the world.
     void remove_static_box(int box);
 
-    // A kinematic body of `boxes` (in its own frame) with `material`, its frame at `position`:
-    // moved by move_kinematic, it pushes rocks and carries its velocity into their contacts,
-    // but nothing pushes it (the heap test's funnel). Returns its index.
+    // A kinematic group of `boxes` (in its own frame, unrotated) with `material`, its frame at
+    // `position`: moved by move_kinematic, it pushes rocks and carries its velocity into their
+    // contacts, but nothing pushes it (the heap test's funnel). One body per box; at most 256
+    // boxes in a world (std::invalid_argument beyond). Returns its index.
     int add_kinematic_boxes(const std::vector<shapes::OrientedBox>& boxes, const Material& material,
                             const Vec3& position);
-    // Puts kinematic body `body`'s frame at `position` by the end of the next step; Bullet
-    // gives it the velocity of that move over the step.
-    void move_kinematic(int body, const Vec3& position);
-    // Takes it out of the world.
-    void remove_kinematic(int body);
+    // Puts kinematic group `group`'s frame at `position` by the end of the next step; Bullet
+    // gives its boxes the velocity of that move over the step.
+    void move_kinematic(int group, const Vec3& position);
+    // Takes the group out of the world.
+    void remove_kinematic(int group);
 
     // Whether Bullet's rigid contact holds the rock against the wall (a resting contact), or
     // the caller's compliant law (an impact; the default).
