@@ -245,9 +245,8 @@ struct World::Impl {
             };
             tiles = cells(slope.end_x()) * cells(slope.spec().width);
         }
-        return static_cast<unsigned short>(
-            std::min<std::size_t>(16384, slope.solids().size() + rock_count + tiles + 6 +
-                                        kKinematicBoxes));
+        return static_cast<unsigned short>(std::min<std::size_t>(
+            16384, slope.solids().size() + rock_count + tiles + 6 + kKinematicBoxes));
     }
 
     // Broadphase bounds: the slope's extent with room for rocks flying off it; objects beyond
