@@ -31,6 +31,8 @@ constexpr double density = 2600.0;           // kg/m3, the seed rocks' default
 constexpr double facing_modulus = 2.95e9;    // Pa, docs/formulas.md: the seed's wall calibrated
 constexpr double sizes[] = {0.2, 0.3, 0.4};  // m, the seed's rocks
 constexpr double speeds[] = {1.5, 3.0, 4.5, 6.5};  // m/s, the seed sweep's wall impacts
+// Heaps of the full run's heap check: one heap's angle scatters by 3-5 deg from seed to seed.
+constexpr int kValidateHeaps = 4;
 
 shapes::RockKind kind_of(ImpactShape shape) {
     switch (shape) {
@@ -168,10 +170,12 @@ report::VvSection calibration_section(const VvOptions& options) {
          "0.005 between neighbouring restitutions.",
          options.quick
              ? "Heap test: not in the quick run (one heap of 300 cubes takes minutes)."
-             : "Heap test: one heap of 300 cubes (C2's grading scaled to d50 25 mm, the paper's "
-               "funnel of 174 mm lifted at 7.5 mm/s) at the paper's DEM friction 0.4 against "
-               "the measured angle of repose of 25.2 deg (35 tests); tolerance 10 %, the spread "
-               "over the heap's 8 measuring planes being larger (docs/calibration.md)."});
+             : "Heap test: the mean angle of repose of 4 heaps of 300 cubes (C2's grading "
+               "scaled to d50 25 mm, the paper's funnel of 174 mm lifted at 7.5 mm/s; heap-test "
+               "seed 1) at the paper's DEM friction 0.4 against the measured "
+               "mean of 25.2 deg (35 tests); tolerance 10 %. One heap is not enough: heaps of "
+               "the same set-up scatter by 3 to 5 deg (docs/calibration.md), so a single "
+               "heap's angle passed or missed by chance."});
     report::VvTable drops{"Drop test: mean kinematic COR from heights, 40 drops from 1 m", {}};
     risk::DropTestSpec sphere;
     sphere.rock.size = 0.2;
@@ -201,14 +205,22 @@ report::VvSection calibration_section(const VvOptions& options) {
         heap.heap.rock.shape = cube.rock.shape;
         heap.heap.rock.density = 2620.0;
         heap.heap.rock.material.friction = 0.4;
+        heap.count = kValidateHeaps;
         risk::check_heap_spec(heap);
         const risk::HeapTestResult heaps = risk::run_heap_test(heap, options.threads);
-        report::VvCheck angle =
-            make_check("calibration.heap.cube", "300 cubes, friction 0.4: angle of repose", "deg",
-                       25.2, "seed 001, 35 funnel tests", heaps.angle_deg.mean, 0.10);
-        angle.note = fmt("sd over planes %.2g deg", heaps.plane_angle_deg.standard_deviation);
-        if (heaps.not_at_rest > 0) angle.note += "; not at rest when measured";
-        section.tables.push_back({"Heap test: angle of repose, one heap", {angle}});
+        const std::string count = std::to_string(kValidateHeaps);
+        report::VvCheck angle = make_check(
+            "calibration.heap.cube",
+            "300 cubes, friction 0.4: mean angle of repose of " + count + " heaps", "deg", 25.2,
+            "seed 001, mean of 35 funnel tests", heaps.angle_deg.mean, 0.10);
+        angle.note = fmt("95 %% interval of the mean %.1f", heaps.angle_deg.mean_interval.lower) +
+                     fmt(" to %.1f deg, sd between heaps ", heaps.angle_deg.mean_interval.upper) +
+                     fmt("%.2g deg, ", heaps.angle_deg.standard_deviation) +
+                     fmt("over planes %.2g deg", heaps.plane_angle_deg.standard_deviation);
+        if (heaps.not_at_rest > 0) {
+            angle.note += "; " + std::to_string(heaps.not_at_rest) + " not at rest when measured";
+        }
+        section.tables.push_back({"Heap test: angle of repose, " + count + " heaps", {angle}});
     }
     return section;
 }
