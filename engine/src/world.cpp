@@ -152,7 +152,7 @@ struct World::Impl {
     // funnel and walked its child tree every step (17 % of a 500-cube heap's lift). A removed
     // group has no bodies.
     struct Kinematic {
-        std::vector<shapes::OrientedBox> boxes;  // in the group's frame
+        std::vector<Vec3> offsets;  // each box's centre in the group's frame, m
         std::vector<std::unique_ptr<btBoxShape>> shapes;
         std::vector<std::unique_ptr<btRigidBody>> bodies;
     };
@@ -419,8 +419,8 @@ int World::add_kinematic_boxes(const std::vector<shapes::OrientedBox>& boxes,
                                     " in one world, at most " + std::to_string(kKinematicBoxes));
     }
     Impl::Kinematic& kinematic = impl_->kinematics.emplace_back();
-    kinematic.boxes = boxes;
     for (const shapes::OrientedBox& box : boxes) {
+        kinematic.offsets.push_back(box.center);
         kinematic.shapes.push_back(make_box_shape(box));
         const btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr,
                                                             kinematic.shapes.back().get());
@@ -442,7 +442,7 @@ void World::move_kinematic(int group, const Vec3& position) {
     // (where it was) to the world transform (where it will be) over the step.
     for (std::size_t k = 0; k < kinematic.bodies.size(); ++k) {
         btTransform place = kinematic.bodies[k]->getWorldTransform();
-        place.setOrigin(to_bt(Vec3(position + kinematic.boxes[k].center)));
+        place.setOrigin(to_bt(Vec3(position + kinematic.offsets[k])));
         kinematic.bodies[k]->setWorldTransform(place);
     }
 }

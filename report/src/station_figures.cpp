@@ -50,6 +50,12 @@ ShapePoints& points_of(MotionTrend& trend, const std::string& shape) {
     return trend.shapes.back();
 }
 
+// Every shape of the set, also one whose rocks give no point (its legend entry and table row
+// then say n = 0 rather than leave the shape out), in shapes_of's order.
+void add_shapes(MotionTrend& trend, const StationSet& set) {
+    for (const std::string& shape : shapes_of(set)) points_of(trend, shape);
+}
+
 void add_point(MotionTrend& trend, const std::string& shape, double x, double y) {
     ShapePoints& p = points_of(trend, shape);
     p.x.push_back(x);
@@ -188,9 +194,7 @@ MotionTrend velocity_change_trend(const StationSet& set) {
     trend.label = set.label;
     trend.toe = toe_station_m;
     trend.far = far_station_m;
-    // Every shape of the set, also one whose rocks give no point: its legend entry and table
-    // row then say n = 0 rather than leave the shape out.
-    for (const std::string& shape : shapes_of(set)) points_of(trend, shape);
+    add_shapes(trend, set);
     std::vector<std::pair<double, double>> by_cr;
     for (const db::RockStations& rock : set.rocks) {
         if (std::max(toe, far) >= rock.stations.size()) continue;
@@ -218,9 +222,7 @@ MotionTrend spin_speed_trend(const StationSet& set) {
     MotionTrend trend;
     trend.label = set.label;
     trend.toe = trend.far = toe_station_m;
-    // Every shape of the set, also one whose rocks give no point: its legend entry and table
-    // row then say n = 0 rather than leave the shape out.
-    for (const std::string& shape : shapes_of(set)) points_of(trend, shape);
+    add_shapes(trend, set);
     for (const db::RockStations& rock : set.rocks) {
         if (toe >= rock.stations.size()) continue;
         const engine::StationCrossing& a = rock.stations[toe];
