@@ -40,6 +40,7 @@ struct Options {
     int parallel = 2;
     int threads = 2;
     int iterations = 10;
+    double contact_slop = engine::HeapScenario{}.contact_slop;
 };
 
 risk::HeapTestSpec spec_of(const Options& o) {
@@ -61,6 +62,7 @@ risk::HeapTestSpec spec_of(const Options& o) {
     spec.heap.funnel.lift_speed = o.lift_speed;
     spec.heap.time_step = o.time_step;
     spec.heap.solver_iterations = o.iterations;
+    spec.heap.contact_slop = o.contact_slop;
     spec.seed = o.seed;
     return spec;
 }
@@ -91,6 +93,8 @@ int main(int argc, char** argv) {
     app.add_option("--time-step", o.time_step, "Time step, s")->capture_default_str();
     app.add_option("--seed", o.seed, "Base seed")->capture_default_str();
     app.add_option("--iterations", o.iterations, "Solver iterations")->capture_default_str();
+    app.add_option("--contact-slop", o.contact_slop, "Penetration left uncorrected, g dt^2")
+        ->capture_default_str();
     app.add_option("--threads", o.threads,
                    "Collision threads of the one heap's second run; 1: none")
         ->capture_default_str()

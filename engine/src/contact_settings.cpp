@@ -112,6 +112,11 @@ void configure_solver(btContactSolverInfo& info, const Numerics& numerics) {
     // Stop iterating once an iteration changes no velocity by more than 1e-4 m/s (the residual
     // is squared): a single rock's contacts converge in a few iterations.
     info.m_leastSquaresResidualThreshold = 1e-8;
+    // Full warm starting: each contact row starts from last step's impulse, not 85 % of it
+    // (Bullet's default; Box2D starts from all of it). In a pile at rest the iterations then
+    // only correct what changed: with 0.85 they had to rebuild 15 % of every load each step,
+    // and the rocks of a 300-cube pile kept moving at a median 4.5 mm/s instead of 1 mm/s.
+    info.m_warmstartingFactor = 1.0;
 }
 
 }  // namespace rockfall::engine

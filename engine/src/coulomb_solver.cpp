@@ -45,6 +45,7 @@ void CoulombSolver::convertContacts(btPersistentManifold** manifolds, int manifo
     disable_point_friction();
     build_patches(manifolds, manifold_count, info);
     aim_restitution_at_touch(info);
+    leave_slop(info);
     // The disabled point-friction rows would cost Bullet's iterations two row solves per point
     // for nothing (both limits zero, no impulse): hidden from them by the pool's size, kept in
     // memory for the points' write-back (report_patches). Bullet's setup sizes its friction
@@ -82,6 +83,19 @@ void CoulombSolver::aim_restitution_at_touch(const btContactSolverInfo& info) {
         const double touch_speed = approach + gain * since_touch / dt;
         const double target = touch_speed >= threshold ? e * touch_speed : 0.0;
         row.m_rhs += (target - bullet_target) * row.m_jacDiagABInv;
+    }
+}
+
+void CoulombSolver::leave_slop(const btContactSolverInfo& info) {
+    const double slop = slop_rate_ * info.m_timeStep * info.m_timeStep;
+    if (slop <= 0.0) return;
+    for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i) {
+        btSolverConstraint& row = m_tmpSolverContactConstraintPool[i];
+        // Split impulse at every depth: the position row's target is proportional to the
+        // penetration -d (zero for a point at or above the surface); it now corrects -d - slop.
+        const double d =
+            static_cast<const btManifoldPoint*>(row.m_originalContactPoint)->getDistance();
+        row.m_rhsPenetration = d < -slop ? row.m_rhsPenetration * (d + slop) / d : 0.0;
     }
 }
 

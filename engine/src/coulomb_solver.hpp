@@ -37,7 +37,19 @@ namespace rockfall::engine {
 // to a step earlier at a lower speed (gravity has since added up to g dt). This solver aims at
 // e times the speed at first touch instead, and drops the bounce when that speed is below the
 // restitution threshold.
+//
+// Slop: Bullet's split impulse removes 80 % of every penetration per step, so a resting
+// contact is pushed to within round-off of the surface, found apart the next step (and left
+// out of the solver: no normal force, no friction), and lands again the step after. A pile's
+// rocks lost their support and friction one step in two, jittered at about g dt and crept.
+// This solver corrects only the penetration beyond `slop` (Box2D's linear slop); the velocity
+// rows, and so the bounces, are Bullet's.
 class CoulombSolver : public btSequentialImpulseConstraintSolver {
+  public:
+    // The slop per squared second of the step, m/s^2: the slop of a step dt is this times
+    // dt^2 (numerics.contact_slop times g).
+    void set_slop_rate(double rate) { slop_rate_ = rate; }
+
   protected:
     void convertContacts(btPersistentManifold** manifolds, int manifold_count,
                          const btContactSolverInfo& info) override;
@@ -73,7 +85,9 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
     void report_patches();
     btScalar bound_rolling_resistance();
     void aim_restitution_at_touch(const btContactSolverInfo& info);
+    void leave_slop(const btContactSolverInfo& info);
 
+    double slop_rate_ = 0.0;  // m/s^2
     std::vector<Patch> patches_;
     // Bullet's point-friction rows of the current group, hidden from its iterations.
     int point_friction_rows_ = 0;

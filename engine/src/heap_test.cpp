@@ -45,6 +45,7 @@ Scenario world_scenario(const HeapScenario& heap) {
     scenario.stations = {};
     scenario.numerics.time_step = heap.time_step;
     scenario.numerics.solver_iterations = heap.solver_iterations;
+    scenario.numerics.contact_slop = heap.contact_slop;
     scenario.gravity = heap.gravity;
     Cluster cluster;
     cluster.grading = heap.grading;

@@ -266,6 +266,7 @@ World::World(const Scenario& scenario, const shapes::Slope& slope)
     install_material_combiners();
     impl_->world.setGravity(btVector3(0.0, 0.0, -scenario.gravity));
     configure_solver(impl_->world.getSolverInfo(), scenario.numerics);
+    impl_->solver.set_slop_rate(scenario.numerics.contact_slop * scenario.gravity);
     // Static solids never move: their AABBs need no update each step.
     impl_->world.setForceUpdateAllAabbs(false);
 

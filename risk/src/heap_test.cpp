@@ -72,6 +72,7 @@ void check_heap_spec(const HeapTestSpec& spec) {
     detail::require_positive("max_fill_time", h.max_fill_time, "s");
     detail::require_positive("max_settle_time", h.max_settle_time, "s");
     require_count("solver_iterations", h.solver_iterations, 1, 100, "");
+    detail::require_range("contact_slop", h.contact_slop, "g dt^2", 0.0, 100.0, false, false);
     require_count("collision_threads", h.collision_threads, 1, 1024, "");
     detail::require_positive("gravity", h.gravity, "m/s2");
     require_count("count", spec.count, 1, 1'000'000, "heaps");
