@@ -27,7 +27,7 @@ void attach_material(btCollisionObject& body, const Material& coefficients,
 void install_material_combiners();
 
 // Solver settings that make the configured restitution independent of the time step (see
-// docs/scenarios.md, "Contact model").
+// docs/contact_model.md).
 void configure_solver(btContactSolverInfo& info, const Numerics& numerics);
 
 // Collision margin of rock hulls and static boxes, m: Bullet's default 0.04 m would round

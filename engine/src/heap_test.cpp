@@ -199,7 +199,7 @@ class HeapRun {
             if (elapsed >= limit || !step()) return false;
             elapsed += heap_.time_step;
             // The mass-weighted root mean square speed, sqrt(2 E_translation / M): single
-            // rocks of a pile rock at about g dt (a rigid contact's jitter) forever.
+            // rocks of a pile tip or shift now and then long after the bulk is still.
             double energy = 0.0, mass = 0.0;
             for (std::size_t i = 0; i < bodies_.size(); ++i) {
                 if (!outcome_.on_floor[i]) continue;

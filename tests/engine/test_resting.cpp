@@ -208,7 +208,7 @@ TEST_CASE("a block resting on an incline below its friction angle stays put",
     const double moved = (states.back().position - from->position).norm();
     INFO("moved " << moved * 1e6 << " um in 2 s, fastest " << speed * 1e3 << " mm/s");
     // It creeps 68 um in 2 s (fastest 1.1 mm/s): the solver stops iterating once no velocity
-    // changes by more than 1e-4 m/s (docs/scenarios.md, "Contact model"), and the slip left
+    // changes by more than 1e-4 m/s (docs/contact_model.md), and the slip left
     // under that is not taken back. Iterating to 1e-6 m/s left 0.3 um.
     CHECK(moved < 1.5e-4);
     CHECK(speed < 3e-3);

@@ -100,7 +100,7 @@ TEST_CASE("a sphere rests on the sheet, on a hole's rim or through the hole wher
         } else {
             // Bullet's triangle contact does not push a sphere on the rim to the centre (without
             // friction it stayed 2.3 mm off as well): it rests near where it landed, 1.5 mm off
-            // since resting contacts stopped jittering (docs/scenarios.md, "Resting
+            // since resting contacts stopped jittering (docs/contact_model.md, "Resting
             // contacts"; 0.5 mm before), on the rim a little higher than when centred.
             CHECK_THAT(
                 on_rim.z(),

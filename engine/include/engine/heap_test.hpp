@@ -76,8 +76,8 @@ struct HeapScenario {
     double rest_speed = 0.01;
     /// ... for this long, s (> 0); the fill before the lift and the heap after it.
     double rest_duration = 0.3;
-    /// Longest simulated time of the fill before the lift, s (> 0): a fill creeping by then is
-    /// lifted all the same (its rocks rock at about g dt in the rigid contacts).
+    /// Longest simulated time of the fill before the lift, s (> 0): a fill still moving by then
+    /// is lifted all the same.
     double max_fill_time = 3.0;
     /// Longest simulated time of the heap's settling after the lift, s (> 0).
     double max_settle_time = 10.0;

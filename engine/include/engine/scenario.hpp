@@ -19,7 +19,7 @@ namespace rockfall::engine {
 using Vec3 = Eigen::Vector3d;
 
 /// Contact coefficients of one surface or rock material. A contact between two materials uses
-/// the arithmetic mean of their values (see docs/scenarios.md, "Contact model").
+/// the arithmetic mean of their values (see docs/contact_model.md).
 struct Material {
     /// Coulomb friction coefficient, in [0, 2].
     double friction = 0.6;
@@ -174,7 +174,7 @@ struct Numerics {
     /// Penetration the position correction leaves in place, in units of g dt^2 (the depth a
     /// contact sinks in one unsupported step; 19.6 um at the default step), in [0, 100]: a
     /// resting contact then stays in the solver every step instead of being pushed clear and
-    /// dropped every other one (docs/scenarios.md, "Resting contacts"). 0: every penetration
+    /// dropped every other one (docs/contact_model.md, "Resting contacts"). 0: every penetration
     /// is corrected (Bullet's behaviour).
     double contact_slop = 2.0;
     /// Stepping of wall impacts.
