@@ -5,6 +5,7 @@
 // layer's compound tiles, the sheet, the wall) end bit for bit as on one thread.
 
 #include "flume_cluster.hpp"
+#include "small_heap.hpp"
 
 #include "engine/heap_test.hpp"
 #include "engine/simulation.hpp"
@@ -19,17 +20,9 @@ using namespace rockfall;
 
 namespace {
 
-// 100 blocky rocks (massive) of 8-20 mm in a 60 mm funnel lifted at 50 mm/s: a few seconds of CPU.
-engine::HeapScenario small_heap(bool sheet) {
-    engine::HeapScenario heap;
-    heap.rock.kind = shapes::RockKind::massive;
-    heap.grading.count = 100;
-    heap.grading.d50 = 0.012;
-    heap.grading.d_min = 0.008;
-    heap.grading.d_max = 0.020;
-    heap.funnel.inner_diameter = 0.06;
-    heap.funnel.lift_speed = 0.05;
-    heap.floor_size = 0.5;
+// 100 rocks of the small heap, half a second each for the fill and the settling.
+engine::HeapScenario dispatcher_heap(bool sheet) {
+    engine::HeapScenario heap = engine::test::small_heap(100);
     heap.max_fill_time = 0.5;
     heap.max_settle_time = 0.5;
     if (sheet) {
@@ -63,7 +56,7 @@ TEST_CASE("collision detection on several threads gives the one-thread heap bit 
           "[verification]") {
     for (const bool sheet : {false, true}) {
         CAPTURE(sheet);
-        engine::HeapScenario heap = small_heap(sheet);
+        engine::HeapScenario heap = dispatcher_heap(sheet);
         const engine::HeapOutcome one = engine::simulate_heap(heap, 7);
         REQUIRE(one.steps > 500);
         for (const int threads : {2, 3}) {

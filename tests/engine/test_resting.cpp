@@ -4,6 +4,7 @@
 // slop), so a pile comes to rest and a block on an incline below its friction angle stays.
 
 #include "plane_scenario.hpp"
+#include "small_heap.hpp"
 
 #include "engine/heap_test.hpp"
 #include "engine/simulation.hpp"
@@ -216,18 +217,10 @@ TEST_CASE("a block resting on an incline below its friction angle stays put",
 
 namespace {
 
-// 150 blocky rocks (massive) of 8-20 mm dropped into a 60 mm funnel: the fill phase only
-// (the funnel lifts at once, 1 m/s).
+// 150 rocks of the small heap: the fill phase only (the funnel then lifts at 1 m/s).
 HeapOutcome fill(double contact_slop) {
-    HeapScenario heap;
-    heap.rock.kind = shapes::RockKind::massive;
-    heap.grading.count = 150;
-    heap.grading.d50 = 0.012;
-    heap.grading.d_min = 0.008;
-    heap.grading.d_max = 0.020;
-    heap.funnel.inner_diameter = 0.06;
+    HeapScenario heap = small_heap(150);
     heap.funnel.lift_speed = 1.0;
-    heap.floor_size = 0.5;
     heap.max_fill_time = 2.0;
     heap.max_settle_time = 0.01;
     heap.contact_slop = contact_slop;

@@ -171,6 +171,9 @@ TEST_CASE("bad heap inputs name the field, value and range", "[heap]") {
     CHECK_THROWS_WITH(risk::check_heap_spec(spec),
                       "grading.d_max = 0.05 m: must be in (0.001, 0.03]");
     spec = small_heap(shapes::RockKind::massive, 60);
+    spec.heap.contact_slop = -1.0;
+    CHECK_THROWS_WITH(risk::check_heap_spec(spec), "contact_slop = -1 g dt^2: must be in [0, 100]");
+    spec = small_heap(shapes::RockKind::massive, 60);
     risk::FrictionOptions options;
     CHECK_THROWS_WITH(risk::identify_friction(spec, 95.0, options),
                       "target_angle = 95 deg: must be in (0, 90)");

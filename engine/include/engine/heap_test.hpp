@@ -84,7 +84,7 @@ struct HeapScenario {
     /// Solver iterations per step, in [1, 100].
     int solver_iterations = 10;
     /// Penetration left uncorrected, in units of g dt^2, in [0, 100] (Numerics::contact_slop).
-    double contact_slop = 2.0;
+    double contact_slop = Numerics{}.contact_slop;
     /// Gravitational acceleration, m/s2 (> 0).
     double gravity = 9.81;
     /// Threads for the collision detection of each step, in [1, 1024]: not physics, the
