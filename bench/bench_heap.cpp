@@ -36,6 +36,7 @@ struct Options {
     double restitution = 0.3;
     double lift_speed = 0.0075;
     double time_step = 1e-3;
+    double lift_time_step = engine::HeapScenario{}.lift_time_step;
     std::uint64_t seed = 1;
     int parallel = 2;
     int threads = 2;
@@ -61,6 +62,7 @@ risk::HeapTestSpec spec_of(const Options& o) {
     spec.heap.grading.count = o.rocks;
     spec.heap.funnel.lift_speed = o.lift_speed;
     spec.heap.time_step = o.time_step;
+    spec.heap.lift_time_step = o.lift_time_step;
     spec.heap.solver_iterations = o.iterations;
     spec.heap.contact_slop = o.contact_slop;
     spec.seed = o.seed;
@@ -91,6 +93,9 @@ int main(int argc, char** argv) {
     app.add_option("--restitution", o.restitution, "Rock restitution")->capture_default_str();
     app.add_option("--lift-speed", o.lift_speed, "Funnel lift speed, m/s")->capture_default_str();
     app.add_option("--time-step", o.time_step, "Time step, s")->capture_default_str();
+    app.add_option("--lift-time-step", o.lift_time_step,
+                   "Time step of the lift and the settling, s; 0: --time-step")
+        ->capture_default_str();
     app.add_option("--seed", o.seed, "Base seed")->capture_default_str();
     app.add_option("--iterations", o.iterations, "Solver iterations")->capture_default_str();
     app.add_option("--contact-slop", o.contact_slop, "Penetration left uncorrected, g dt^2")
@@ -109,7 +114,8 @@ int main(int argc, char** argv) {
         std::cout << "heap test: " << o.rocks << " " << o.kind << " rocks, d50 "
                   << spec.heap.grading.d50 << " m, friction " << o.friction
                   << ", rolling resistance " << o.rolling_resistance << ", lift " << o.lift_speed
-                  << " m/s, step " << o.time_step << " s\n";
+                  << " m/s, step " << o.time_step << " s (lift "
+                  << (o.lift_time_step > 0.0 ? o.lift_time_step : o.time_step) << " s)\n";
         const bench::Stopwatch one;
         const risk::HeapMeasurement m = risk::run_heap(spec, 0);
         const double wall = one.wall();

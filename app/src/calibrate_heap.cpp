@@ -65,6 +65,7 @@ nlohmann::json result_json(const risk::HeapTestResult& r) {
                          {"rolled_off", m.rolled_off},
                          {"fill_height_m", m.fill_height},
                          {"fill_time_s", m.fill_time},
+                         {"fill_at_rest", m.fill_at_rest},
                          {"lift_time_s", m.lift_time},
                          {"settle_time_s", m.settle_time},
                          {"heap_height_m", m.heap_height},
@@ -79,6 +80,7 @@ nlohmann::json result_json(const risk::HeapTestResult& r) {
             {"heap_height_m", summary_json(r.heap_height)},
             {"fill_height_m", summary_json(r.fill_height)},
             {"not_at_rest", r.not_at_rest},
+            {"fills_not_at_rest", r.fills_not_at_rest},
             {"heaps", heaps}};
 }
 
@@ -124,8 +126,17 @@ void print_heap_text(std::ostream& out, const HeapReport& report) {
             << " (rock-rock contacts; with the surface and the wall the mean)\n";
         out << "  " << r.heaps.size() << " heap" << (r.heaps.size() == 1 ? "" : "s")
             << " from seed " << run.spec.seed << ", time step " << short_number(h.time_step)
-            << " s, angle from " << run.spec.method.planes << " planes through the axis; "
-            << r.not_at_rest << " not at rest after " << short_number(h.max_settle_time) << " s\n";
+            << " s (lift " << short_number(engine::effective_lift_step(h)) << " s), "
+            << h.solver_iterations << " solver iterations, angle from " << run.spec.method.planes
+            << " planes through the axis; " << r.not_at_rest << " not at rest after "
+            << short_number(h.max_settle_time) << " s\n";
+        if (r.fills_not_at_rest > 0) {
+            out << "  warning: " << r.fills_not_at_rest << " fill"
+                << (r.fills_not_at_rest == 1 ? " was" : "s were") << " still moving after "
+                << short_number(h.max_fill_time)
+                << " s and lifted so: give it a longer --max-fill-time, or more --iterations for a "
+                   "fill deeper than about 0.2 m (docs/calibration.md)\n";
+        }
         for (const risk::HeapMeasurement& m : r.heaps) {
             out << "    heap " << m.index << ": fill " << fmt("%.3f", m.fill_height) << " m, lift "
                 << fmt("%.1f", m.lift_time) << " s, height " << fmt("%.3f", m.heap_height)
@@ -169,6 +180,8 @@ nlohmann::json heap_json(const HeapReport& report) {
                                 {"count", run.spec.count},
                                 {"seed", run.spec.seed},
                                 {"time_step_s", h.time_step},
+                                {"lift_time_step_s", engine::effective_lift_step(h)},
+                                {"solver_iterations", h.solver_iterations},
                                 {"planes", run.spec.method.planes},
                                 {"result", result_json(run.result)}};
         if (run.identification) {

@@ -17,6 +17,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -63,6 +64,12 @@ void check_args(const HeapArgs& args) {
     require_in("--cu", h.grading.cu, "", 1.0, 100.0, true);
     require_in("--floor-size", h.floor_size, "m", 4.0 * h.funnel.inner_diameter, 20.0);
     require_in("--time-step", h.time_step, "s", 1e-5, 1e-2);
+    if (!(h.lift_time_step == 0.0 || (h.lift_time_step >= 1e-5 && h.lift_time_step <= 1e-2))) {
+        std::ostringstream message;
+        message << "--lift-time-step = " << h.lift_time_step
+                << " s: must be 0 (the fill's step) or in [1e-05, 0.01]";
+        throw std::invalid_argument(message.str());
+    }
     require_in("--rest-speed", h.rest_speed, "m/s", 0.0, 1.0, true);
     require_in("--max-fill-time", h.max_fill_time, "s", 0.0, 1000.0, true);
     require_in("--max-settle-time", h.max_settle_time, "s", 0.0, 1000.0, true);
@@ -211,8 +218,17 @@ void register_heap(CLI::App& calibrate) {
     cmd->add_option("--floor-size", h.floor_size,
                     "Side of the square surface (m), at least 4 funnel diameters, at most 20")
         ->capture_default_str();
-    cmd->add_option("--time-step", h.time_step, "Time step (s), in [1e-5, 1e-2]")
+    cmd->add_option("--time-step", h.time_step, "Time step of the fill (s), in [1e-5, 1e-2]")
         ->capture_default_str();
+    cmd->add_option("--lift-time-step", h.lift_time_step,
+                    "Time step of the lift and the heap's settling (s), in [1e-5, 1e-2]; 0: "
+                    "--time-step")
+        ->capture_default_str();
+    cmd->add_option("--iterations", h.solver_iterations,
+                    "Solver iterations per step, in [1, 100] (a fill deeper than about 0.2 m "
+                    "needs 40)")
+        ->capture_default_str()
+        ->transform(integer_in(1, 100, "an iteration count"));
     cmd->add_option("--rest-speed", h.rest_speed,
                     "At rest below this root mean square rock speed (m/s)")
         ->capture_default_str();

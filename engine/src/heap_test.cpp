@@ -119,7 +119,8 @@ class HeapRun {
     HeapOutcome execute() {
         // Phase 1: the packed rocks fall into the funnel and settle there (a fill still
         // creeping at max_settle_time is lifted all the same).
-        if (!settle(outcome_.fill_time, heap_.max_fill_time) && failed()) return finish();
+        outcome_.fill_at_rest = settle(outcome_.fill_time, heap_.max_fill_time, heap_.time_step);
+        if (!outcome_.fill_at_rest && failed()) return finish();
         double fill_top = outcome_.surface_z;
         for (std::size_t i = 0; i < bodies_.size(); ++i) fill_top = std::max(fill_top, top_of(i));
         outcome_.fill_height = fill_top - outcome_.surface_z;
@@ -128,16 +129,17 @@ class HeapRun {
             return finish();
         }
         // Phase 2: the lift, until the rim clears every rock still inside its circle.
+        const double dt = effective_lift_step(heap_);
         while (true) {
-            const double rise = heap_.funnel.lift_speed * (outcome_.lift_time + heap_.time_step);
+            const double rise = heap_.funnel.lift_speed * (outcome_.lift_time + dt);
             world_.move_kinematic(funnel_, Vec3(outcome_.axis_x, 0.0, rim_z_ + rise));
-            if (!step()) return finish();
-            outcome_.lift_time += heap_.time_step;
+            if (!step(dt)) return finish();
+            outcome_.lift_time += dt;
             if (rim_z_ + rise > highest_inside() + kRimClearance) break;
         }
         world_.remove_kinematic(funnel_);
         // Phase 3: the heap settles.
-        if (!settle(outcome_.settle_time, heap_.max_settle_time) && !failed())
+        if (!settle(outcome_.settle_time, heap_.max_settle_time, dt) && !failed())
             outcome_.status = HeapStatus::time_limit;
         return finish();
     }
@@ -164,10 +166,11 @@ class HeapRun {
         return top;
     }
 
-    // One step, then the rocks that left the surface are taken out. False on a failure.
-    bool step() {
-        world_.step(heap_.time_step);
-        time_ += heap_.time_step;
+    // One step of dt (s), then the rocks that left the surface are taken out. False on a
+    // failure.
+    bool step(double dt) {
+        world_.step(dt);
+        time_ += dt;
         ++outcome_.steps;
         const double half = 0.5 * heap_.floor_size;
         for (std::size_t i = 0; i < bodies_.size(); ++i) {
@@ -190,14 +193,14 @@ class HeapRun {
         return true;
     }
 
-    // Steps until every rock on the surface has been slower than rest_speed for
+    // Steps of dt (s) until every rock on the surface has been slower than rest_speed for
     // rest_duration (true), or `limit` (s) or a failure (false); `elapsed` gets the time.
-    bool settle(double& elapsed, double limit) {
+    bool settle(double& elapsed, double limit, double dt) {
         double quiet = 0.0;
         elapsed = 0.0;
         while (quiet < heap_.rest_duration) {
-            if (elapsed >= limit || !step()) return false;
-            elapsed += heap_.time_step;
+            if (elapsed >= limit || !step(dt)) return false;
+            elapsed += dt;
             // The mass-weighted root mean square speed, sqrt(2 E_translation / M): single
             // rocks of a pile tip or shift now and then long after the bulk is still.
             double energy = 0.0, mass = 0.0;
@@ -208,7 +211,7 @@ class HeapRun {
                 mass += m;
             }
             const double rms = mass > 0.0 ? std::sqrt(energy / mass) : 0.0;
-            quiet = rms < heap_.rest_speed ? quiet + heap_.time_step : 0.0;
+            quiet = rms < heap_.rest_speed ? quiet + dt : 0.0;
         }
         return true;
     }
@@ -251,6 +254,10 @@ const char* to_string(HeapStatus status) {
             break;
     }
     return "numerical_failure";
+}
+
+double effective_lift_step(const HeapScenario& heap) {
+    return heap.lift_time_step > 0.0 ? heap.lift_time_step : heap.time_step;
 }
 
 double rock_top(const shapes::RockGeometry& geometry, const RockState& state) {

@@ -67,6 +67,12 @@ void check_heap_spec(const HeapTestSpec& spec) {
     detail::require_range("floor_size", h.floor_size, "m", 4.0 * f.inner_diameter, 20.0, false,
                           false);
     detail::require_range("time_step", h.time_step, "s", 1e-5, 1e-2, false, false);
+    if (!(h.lift_time_step == 0.0 || (h.lift_time_step >= 1e-5 && h.lift_time_step <= 1e-2))) {
+        std::ostringstream message;
+        message << "lift_time_step = " << h.lift_time_step
+                << " s: must be 0 (the fill's time_step) or in [1e-05, 0.01]";
+        throw std::invalid_argument(message.str());
+    }
     detail::require_positive("rest_speed", h.rest_speed, "m/s");
     detail::require_positive("rest_duration", h.rest_duration, "s");
     detail::require_positive("max_fill_time", h.max_fill_time, "s");
@@ -188,6 +194,7 @@ HeapMeasurement measure_heap(const engine::HeapOutcome& heap, double bin_width,
     m.rolled_off = heap.rolled_off;
     m.fill_height = heap.fill_height;
     m.fill_time = heap.fill_time;
+    m.fill_at_rest = heap.fill_at_rest;
     m.lift_time = heap.lift_time;
     m.settle_time = heap.settle_time;
     const HeapSurface surface(heap);
@@ -242,6 +249,7 @@ HeapTestResult summarize(std::vector<HeapMeasurement> heaps) {
     std::vector<double> angle, plane, height, fill;
     for (const HeapMeasurement& m : r.heaps) {
         r.not_at_rest += m.status == engine::HeapStatus::at_rest ? 0 : 1;
+        r.fills_not_at_rest += m.fill_at_rest ? 0 : 1;
         angle.push_back(m.angle_deg);
         height.push_back(m.heap_height);
         fill.push_back(m.fill_height);

@@ -239,5 +239,20 @@ TEST_CASE("a pile in a funnel comes to rest: resting contacts stay in the solver
     INFO("fill at rest after " << slop.fill_time << " s with the slop, " << none.fill_time
                                << " s without (limit 2 s)");
     CHECK(slop.fill_time < 1.5);
+    CHECK(slop.fill_at_rest);
     CHECK(none.fill_time >= 2.0);
+    CHECK_FALSE(none.fill_at_rest);
+}
+
+TEST_CASE("the lift and the heap's settling step with the lift time step", "[contact]") {
+    HeapScenario heap = small_heap(60);
+    heap.time_step = 1e-3;
+    heap.lift_time_step = 2e-3;
+    const HeapOutcome outcome = simulate_heap(heap, 3);
+    INFO("fill " << outcome.fill_time << " s, lift " << outcome.lift_time << " s, settle "
+                 << outcome.settle_time << " s, " << outcome.steps << " steps");
+    CHECK(outcome.status == HeapStatus::at_rest);
+    const auto steps = [](double time, double dt) { return std::llround(time / dt); };
+    CHECK(outcome.steps ==
+          steps(outcome.fill_time, 1e-3) + steps(outcome.lift_time + outcome.settle_time, 2e-3));
 }

@@ -69,8 +69,12 @@ struct HeapScenario {
     /// A perforated sheet lying on the surface (seed 001's lining, with the surface's material),
     /// or none.
     std::optional<shapes::PerforatedSheet> sheet;
-    /// Time step, s, in [1e-5, 1e-2].
+    /// Time step of the fill, s, in [1e-5, 1e-2].
     double time_step = 1e-3;
+    /// Time step of the lift and the heap's settling, s, in [1e-5, 1e-2]; 0: `time_step`. The
+    /// fill is a fall of 0.2-0.4 m into the funnel at up to 3 m/s, the lift a slow flow of
+    /// rocks at centimetres per second, which a longer step resolves as well.
+    double lift_time_step = 0.0;
     /// The rocks are at rest when their root mean square speed (mass-weighted, of the rocks on
     /// the surface) stays below this, m/s (> 0) ...
     double rest_speed = 0.01;
@@ -91,6 +95,9 @@ struct HeapScenario {
     /// outcome is bit-identical whatever the count.
     int collision_threads = 1;
 };
+
+/// The time step of the lift and the settling, s: `lift_time_step`, or `time_step` when 0.
+double effective_lift_step(const HeapScenario& heap);
 
 /// How a heap test ended.
 enum class HeapStatus {
@@ -119,6 +126,9 @@ struct HeapOutcome {
     double axis_y = 0.0;
     /// Top of the settled fill above the surface before the lift, m.
     double fill_height = 0.0;
+    /// Whether the fill met the rest criterion before max_fill_time (false: it was lifted
+    /// still moving).
+    bool fill_at_rest = true;
     /// Simulated times of the fill, the lift (until the rim cleared every rock) and the
     /// heap's settling after it, s.
     double fill_time = 0.0;

@@ -111,6 +111,8 @@ struct HeapMeasurement {
     int rolled_off = 0;
     /// Fill height in the funnel before the lift, m.
     double fill_height = 0.0;
+    /// Whether the fill came to rest before max_fill_time (false: lifted still moving).
+    bool fill_at_rest = true;
     /// Simulated times of fill, lift and settling, s.
     double fill_time = 0.0;
     double lift_time = 0.0;
@@ -144,6 +146,8 @@ struct HeapTestResult {
     std::vector<HeapMeasurement> heaps;
     /// Heaps that did not come to rest within max_settle_time (measured as they were).
     std::int64_t not_at_rest = 0;
+    /// Fills still moving at max_fill_time (lifted all the same).
+    std::int64_t fills_not_at_rest = 0;
     /// The heaps' mean angles, deg: the test's result and its interval.
     SampleSummary angle_deg;
     /// Every valid plane of every heap, deg: the scatter over planes and heaps (the heap means
