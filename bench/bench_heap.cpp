@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
                   << spec.heap.grading.d50 << " m, friction " << o.friction
                   << ", rolling resistance " << o.rolling_resistance << ", lift " << o.lift_speed
                   << " m/s, step " << o.time_step << " s (lift "
-                  << (o.lift_time_step > 0.0 ? o.lift_time_step : o.time_step) << " s)\n";
+                  << engine::effective_lift_step(spec.heap) << " s)\n";
         const bench::Stopwatch one;
         const risk::HeapMeasurement m = risk::run_heap(spec, 0);
         const double wall = one.wall();

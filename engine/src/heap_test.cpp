@@ -118,7 +118,7 @@ class HeapRun {
 
     HeapOutcome execute() {
         // Phase 1: the packed rocks fall into the funnel and settle there (a fill still
-        // creeping at max_settle_time is lifted all the same).
+        // moving at max_fill_time is lifted all the same, and reported so).
         outcome_.fill_at_rest = settle(outcome_.fill_time, heap_.max_fill_time, heap_.time_step);
         if (!outcome_.fill_at_rest && failed()) return finish();
         double fill_top = outcome_.surface_z;
