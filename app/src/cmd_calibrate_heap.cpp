@@ -64,7 +64,7 @@ void check_args(const HeapArgs& args) {
     require_in("--cu", h.grading.cu, "", 1.0, 100.0, true);
     require_in("--floor-size", h.floor_size, "m", 4.0 * h.funnel.inner_diameter, 20.0);
     require_in("--time-step", h.time_step, "s", 1e-5, 1e-2);
-    if (!(h.lift_time_step == 0.0 || (h.lift_time_step >= 1e-5 && h.lift_time_step <= 1e-2))) {
+    if (!engine::lift_step_allowed(h.lift_time_step)) {
         std::ostringstream message;
         message << "--lift-time-step = " << h.lift_time_step
                 << " s: must be 0 (the fill's step) or in [1e-05, 0.01]";

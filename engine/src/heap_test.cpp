@@ -260,6 +260,10 @@ double effective_lift_step(const HeapScenario& heap) {
     return heap.lift_time_step > 0.0 ? heap.lift_time_step : heap.time_step;
 }
 
+bool lift_step_allowed(double lift_time_step) {
+    return lift_time_step == 0.0 || (lift_time_step >= 1e-5 && lift_time_step <= 1e-2);
+}
+
 double rock_top(const shapes::RockGeometry& geometry, const RockState& state) {
     if (geometry.radius > 0.0) return state.position.z() + geometry.radius;
     const Eigen::Matrix3d rotation = state.orientation.toRotationMatrix();

@@ -67,7 +67,7 @@ void check_heap_spec(const HeapTestSpec& spec) {
     detail::require_range("floor_size", h.floor_size, "m", 4.0 * f.inner_diameter, 20.0, false,
                           false);
     detail::require_range("time_step", h.time_step, "s", 1e-5, 1e-2, false, false);
-    if (!(h.lift_time_step == 0.0 || (h.lift_time_step >= 1e-5 && h.lift_time_step <= 1e-2))) {
+    if (!engine::lift_step_allowed(h.lift_time_step)) {
         std::ostringstream message;
         message << "lift_time_step = " << h.lift_time_step
                 << " s: must be 0 (the fill's time_step) or in [1e-05, 0.01]";

@@ -4,6 +4,8 @@
 // inputs. Heaps are small (60-100 rocks of 8-20 mm in a 60 mm funnel lifted at 50 mm/s) so that
 // each case runs in seconds.
 
+#include "../engine/small_heap.hpp"
+
 #include "risk/heap_test.hpp"
 #include "risk/parameter_search.hpp"
 
@@ -41,16 +43,12 @@ engine::HeapOutcome cone_of_spheres(double angle_deg, double height, double radi
     return heap;
 }
 
+// The engine tests' small heap (tests/engine/small_heap.hpp) of `kind`, settling for at most
+// 2 s, from seed 3.
 risk::HeapTestSpec small_heap(shapes::RockKind kind, int rocks) {
     risk::HeapTestSpec spec;
+    spec.heap = engine::test::small_heap(rocks);
     spec.heap.rock.kind = kind;
-    spec.heap.grading.count = rocks;
-    spec.heap.grading.d50 = 0.012;
-    spec.heap.grading.d_min = 0.008;
-    spec.heap.grading.d_max = 0.020;
-    spec.heap.funnel.inner_diameter = 0.06;
-    spec.heap.funnel.lift_speed = 0.05;
-    spec.heap.floor_size = 0.5;
     spec.heap.max_settle_time = 2.0;
     spec.seed = 3;
     return spec;

@@ -99,6 +99,9 @@ struct HeapScenario {
 /// The time step of the lift and the settling, s: `lift_time_step`, or `time_step` when 0.
 double effective_lift_step(const HeapScenario& heap);
 
+/// Whether a `lift_time_step` (s) is allowed: 0, or within `time_step`'s range [1e-5, 1e-2].
+bool lift_step_allowed(double lift_time_step);
+
 /// How a heap test ended.
 enum class HeapStatus {
     at_rest,            ///< the heap came to rest after the lift
