@@ -1,5 +1,6 @@
 #include "coulomb_solver.hpp"
 
+#include "face_contacts.hpp"
 #include "friction_patch.hpp"
 
 #include <algorithm>
@@ -41,6 +42,7 @@ double normal_velocity(const btSolverConstraint& row, const btSolverBody& a, con
 
 void CoulombSolver::convertContacts(btPersistentManifold** manifolds, int manifold_count,
                                     const btContactSolverInfo& info) {
+    solve_within_slop(manifolds, manifold_count, info);
     btSequentialImpulseConstraintSolver::convertContacts(manifolds, manifold_count, info);
     disable_point_friction();
     build_patches(manifolds, manifold_count, info);
@@ -83,11 +85,32 @@ void CoulombSolver::aim_restitution_at_touch(const btContactSolverInfo& info) {
         const double touch_speed = approach + gain * since_touch / dt;
         const double target = touch_speed >= threshold ? e * touch_speed : 0.0;
         row.m_rhs += (target - bullet_target) * row.m_jacDiagABInv;
+        // Bullet lets a speculative point (apart by `gap`) close the gap in this step, which
+        // would take gap / dt off the bounce: it bounces now instead.
+        const double gap = point->getDistance() + info.m_linearSlop;
+        if (target > 0.0 && gap > 0.0) row.m_rhs += gap / dt * row.m_jacDiagABInv;
+    }
+}
+
+double CoulombSolver::slop(const btContactSolverInfo& info) const {
+    return slop_rate_ * info.m_timeStep * info.m_timeStep;
+}
+
+void CoulombSolver::solve_within_slop(btPersistentManifold** manifolds, int manifold_count,
+                                      const btContactSolverInfo& info) const {
+    const double margin = slop(info);
+    if (margin <= 0.0) return;
+    for (int i = 0; i < manifold_count; ++i) {
+        btPersistentManifold& manifold = *manifolds[i];
+        // Set from the bodies every step: the slop changes with the step (wall sub-steps).
+        const double bodies = std::min(manifold.getBody0()->getContactProcessingThreshold(),
+                                       manifold.getBody1()->getContactProcessingThreshold());
+        manifold.setContactProcessingThreshold(std::max({bodies, margin, kTouchRoundOff}));
     }
 }
 
 void CoulombSolver::leave_slop(const btContactSolverInfo& info) {
-    const double slop = slop_rate_ * info.m_timeStep * info.m_timeStep;
+    const double slop = this->slop(info);
     if (slop <= 0.0) return;
     for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i) {
         btSolverConstraint& row = m_tmpSolverContactConstraintPool[i];

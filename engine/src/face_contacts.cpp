@@ -22,10 +22,6 @@ constexpr double kFaceAlignment = 0.9998;
 // g (sin t - mu cos t) at mu = 0.3).
 constexpr double kTouchTolerance = 0.01;
 
-// Distance below which a point is in the solver, m (Bullet's processing threshold; the engine
-// gives 0, see attach_material).
-constexpr double kRoundOff = 1e-9;
-
 // The stored point whose end on the hull is nearest `on_hull` (hull frame) within the
 // breaking threshold, or -1.
 int matching_point(const btPersistentManifold& manifold, bool hull_first,
@@ -265,7 +261,7 @@ int rebuild_manifold(btPersistentManifold& manifold, const btManifoldPoint& refe
     // The touching corners sit at distance 0, which the refresh recomputes to within round-off
     // of either sign: a positive one left a corner out of the solver for a step.
     manifold.setContactProcessingThreshold(
-        std::max<btScalar>(manifold.getContactProcessingThreshold(), kRoundOff));
+        std::max<btScalar>(manifold.getContactProcessingThreshold(), kTouchRoundOff));
     for (int i = 0; i < kept_count; ++i) {
         manifold.addManifoldPoint(points[i]);
     }

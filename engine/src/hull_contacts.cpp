@@ -40,6 +40,39 @@ double drift_bound(const btTransform& before, const btTransform& now, double rea
     return (now.getOrigin() - before.getOrigin()).length() + chord * reach;
 }
 
+// The normal impulse of the last solve summed over the manifold's points, N s.
+double held_impulse(const btPersistentManifold& manifold) {
+    double sum = 0.0;
+    for (int i = 0; i < manifold.getNumContacts(); ++i) {
+        sum += manifold.getContactPoint(i).m_appliedImpulse;
+    }
+    return sum;
+}
+
+// Hands the normal impulse of the points this step's query dropped to the points it added
+// (after the refresh: age 1), in equal shares, as their warm start. GJK returns one point per
+// query, anywhere on a touching face, so a pile's face contacts replace a point in most steps
+// and Bullet starts the new one from zero (measured in a 500-cube fill: 23 % of the points new
+// each step, carrying away 30 % of the warm-start impulse).
+void hand_over(btPersistentManifold& manifold, double held_before) {
+    double kept = 0.0;
+    int added = 0;
+    for (int i = 0; i < manifold.getNumContacts(); ++i) {
+        const btManifoldPoint& point = manifold.getContactPoint(i);
+        if (point.getLifeTime() <= 1) {
+            ++added;
+        } else {
+            kept += point.m_appliedImpulse;
+        }
+    }
+    const double dropped = held_before - kept;
+    if (added == 0 || dropped <= 0.0) return;
+    for (int i = 0; i < manifold.getNumContacts(); ++i) {
+        btManifoldPoint& point = manifold.getContactPoint(i);
+        if (point.getLifeTime() <= 1) point.m_appliedImpulse = dropped / added;
+    }
+}
+
 // Two Bullet convex-convex algorithms sharing one manifold: the plain one every step, the
 // perturbing one in addition at the step a contact appears.
 class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
@@ -80,6 +113,7 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
             if (gap_ > 0.0) return;
         }
         gap_ = 0.0;
+        const double held = held_impulse(*manifold_);
         plain_->processCollision(body0, body1, info, result);
         if (!touching && manifold_->getNumContacts() > 0) {
             // A new contact: find the rest of a touching face or edge now. Pairs that stay
@@ -89,6 +123,7 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
         add_face_contacts(body0, body1);
         // The inner algorithms do not own the manifold, so they leave its refresh to us.
         result->refreshContactPoints();
+        hand_over(*manifold_, held);
     }
 
     btScalar calculateTimeOfImpact(btCollisionObject*, btCollisionObject*, const btDispatcherInfo&,

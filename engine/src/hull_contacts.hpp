@@ -18,6 +18,11 @@
 // is exact. Touching pairs are queried every step: their points jitter by more than 1e-3 of a
 // rock's size per step (tried: keeping their points until they moved 5 % or 25 % of the breaking
 // threshold skipped 0.2 % and 1.2 % of their queries).
+//
+// Warm-start hand-over: GJK's one point per step lands anywhere on a touching face, so in a
+// pile a full manifold drops a point for it most steps, and Bullet starts the new point from
+// zero impulse. The normal impulse of the points a step drops passes to the points it adds as
+// their warm start (docs/contact_model.md, *Deep piles*).
 
 #include <btBulletCollisionCommon.h>
 
