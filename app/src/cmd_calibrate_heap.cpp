@@ -225,8 +225,8 @@ void register_heap(CLI::App& calibrate) {
                     "--time-step")
         ->capture_default_str();
     cmd->add_option("--iterations", h.solver_iterations,
-                    "Solver iterations per step, in [1, 100] (a 500-cube fill, 0.22 m deep, "
-                    "needs 40)")
+                    "Solver iterations per step, in [1, 100] (more bring a deep fill to rest "
+                    "sooner: 500 cubes, 0.25 m deep, 2.9 s with 10, 1.9 s with 40)")
         ->capture_default_str()
         ->transform(integer_in(1, 100, "an iteration count"));
     cmd->add_option("--rest-speed", h.rest_speed,
