@@ -49,7 +49,7 @@ namespace rockfall::engine {
 // contact by more than the slop, and a point at a positive distance was left out of the
 // solver (processing threshold 0, for the bounces: attach_material), with its share of the
 // load. In a 500-cube fill such points held 9.5 % of the normal impulse each step, and its
-// rocks fell by about 7 g dt per step without coming to rest. Points within the slop of
+// rocks kept falling at about 7 g dt without coming to rest. Points within the slop of
 // touching are now solved as speculative contacts (Box2D's speculative distance, Bullet's
 // default for all points): they may close their gap in this step, no more. One that approaches
 // faster than the restitution threshold bounces at once (at most a slop early) at e times its
