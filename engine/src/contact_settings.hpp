@@ -30,6 +30,11 @@ void install_material_combiners();
 // docs/contact_model.md).
 void configure_solver(btContactSolverInfo& info, const Numerics& numerics);
 
+// A touching point's distance is zero to within this, m: a manifold's processing threshold
+// (the distance up to which a point is solved; attach_material gives bodies 0) is at least
+// this much wherever it is raised (face contacts, the speculative margin).
+inline constexpr double kTouchRoundOff = 1e-9;
+
 // Collision margin of rock hulls and static boxes, m: Bullet's default 0.04 m would round
 // every edge of a 0.2 m rock by 4 cm (boxes) or inflate hulls by 4 cm.
 inline constexpr double kCollisionMargin = 0.001;

@@ -1,6 +1,6 @@
 #include "coulomb_solver.hpp"
 
-#include "face_contacts.hpp"
+#include "contact_settings.hpp"
 #include "friction_patch.hpp"
 
 #include <algorithm>
@@ -110,15 +110,15 @@ void CoulombSolver::solve_within_slop(btPersistentManifold** manifolds, int mani
 }
 
 void CoulombSolver::leave_slop(const btContactSolverInfo& info) {
-    const double slop = this->slop(info);
-    if (slop <= 0.0) return;
+    const double depth = slop(info);
+    if (depth <= 0.0) return;
     for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i) {
         btSolverConstraint& row = m_tmpSolverContactConstraintPool[i];
         // Split impulse at every depth: the position row's target is proportional to the
         // penetration -d (zero for a point at or above the surface); it now corrects -d - slop.
         const double d =
             static_cast<const btManifoldPoint*>(row.m_originalContactPoint)->getDistance();
-        row.m_rhsPenetration = d < -slop ? row.m_rhsPenetration * (d + slop) / d : 0.0;
+        row.m_rhsPenetration = d < -depth ? row.m_rhsPenetration * (d + depth) / d : 0.0;
     }
 }
 

@@ -1,5 +1,6 @@
 #include "face_contacts.hpp"
 
+#include "contact_settings.hpp"
 #include "plane_polygon.hpp"
 
 #include <algorithm>

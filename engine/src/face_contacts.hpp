@@ -24,10 +24,6 @@
 
 namespace rockfall::engine {
 
-// A touching point's distance is zero to within this, m: the processing threshold (the
-// distance up to which a point is solved) is at least this much.
-inline constexpr double kTouchRoundOff = 1e-9;
-
 // A convex flat face, world coordinates: outward unit normal and 3 or 4 corners in order.
 struct Face {
     btVector3 normal;
