@@ -290,4 +290,52 @@ BlockSlide sliding_block(double angle_deg, double friction_angle_deg, double dur
     return result;
 }
 
+LayerSlide sliding_layer(double cell_size, double thickness, double friction_angle_deg) {
+    if (!(cell_size > 0.0) || !(thickness > 0.0)) {
+        throw std::invalid_argument("sliding_layer: cell size and thickness must be > 0");
+    }
+    const double length = 1.0;
+    const double v0 = 1.0;
+    const double h = cell_size;
+    Particles<2> layer;
+    add_box_particles<2>(layer, axis_box(Vec3(0.0, -0.5, 0.0), Vec3(length, 0.5, thickness)),
+                         h / 2.0, kCollapseDensity);
+    for (Vec<2>& v : layer.velocity) v = Vec<2>(v0, 0.0);
+    SolverSettings s;
+    s.threads = 1;
+    s.cell_size = h;
+    // Node planes on the floor (z = 0).
+    s.domain_min = Vec3(-0.2, 0.0, -4.0 * h);
+    s.domain_max = Vec3(length + 0.6, 0.0, thickness + 0.2);
+    const double mu = std::tan(to_radians(friction_angle_deg));
+    std::vector<StaticBoundary> floor{solid(axis_box(Vec3(-1.0, -1.0, -1.0), Vec3(10.0, 1.0, 0.0)),
+                                            BoundaryKind::frictional, mu, 0)};
+    DruckerPrager soil;
+    soil.youngs_modulus = 1.0e6;
+    soil.poisson_ratio = 0.3;
+    soil.friction_angle_deg = 30.0;
+    soil.cohesion = 0.0;
+    soil.match = ConeMatch::plane_strain;
+    Solver<2> solver(s, soil, std::move(layer), std::move(floor));
+    set_geostatic_stress<2>(solver.particles(), thickness, g, 0.3 / 0.7);
+    const double mass = solver.particles().total_mass();
+    // Least-squares line v = v0 - a t through the mean velocity of every step.
+    double st = 0.0, sv = 0.0, stt = 0.0, stv = 0.0, n = 0.0;
+    while (solver.time() < 1.0) {
+        solver.step(solver.stable_time_step());
+        const double v = solver.particles().momentum()[0] / mass;
+        if (v < 0.5 * v0) break;
+        const double t = solver.time();
+        st += t;
+        sv += v;
+        stt += t * t;
+        stv += t * v;
+        n += 1.0;
+    }
+    LayerSlide result;
+    result.fitted_deceleration = -(n * stv - st * sv) / (n * stt - st * st);
+    result.expected_deceleration = mu * g;
+    return result;
+}
+
 }  // namespace rockfall::mpm::verification

@@ -126,4 +126,17 @@ struct BlockSlide {
 BlockSlide sliding_block(double angle_deg, double friction_angle_deg, double duration,
                          double damping = 0.0);
 
+/// A Drucker-Prager soil layer (phi 30 deg, no cohesion, E 1 MPa, nu 0.3, 1600 kg/m3, geostatic
+/// K0 start) 1 m long and `thickness` m thick, sliding at 1 m/s on a horizontal floor of basal
+/// friction angle `friction_angle_deg`, at cells of `cell_size` m and 4 particles per cell.
+struct LayerSlide {
+    /// Deceleration from a least-squares line through the mean velocity until it halves, m/s2.
+    double fitted_deceleration = 0.0;
+    /// The analytic tan(phi_b) g, m/s2.
+    double expected_deceleration = 0.0;
+};
+
+/// Slides the layer until its mean velocity halves (at most 1 s).
+LayerSlide sliding_layer(double cell_size, double thickness, double friction_angle_deg);
+
 }  // namespace rockfall::mpm::verification
