@@ -18,9 +18,9 @@ namespace rockfall::mpm::verification {
 namespace {
 
 constexpr double g = 9.81;  // m/s2
-// Column length L0 of the collapse, m, and its soil's density, kg/m3.
+// Column length L0 of the collapse, m, and the density of its soil and the sliding layer, kg/m3.
 constexpr double kCollapseLength = 0.2;
-constexpr double kCollapseDensity = 1600.0;
+constexpr double kSoilDensity = 1600.0;
 
 double to_radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
@@ -190,7 +190,7 @@ ColumnCollapse column_collapse(double aspect, int cells_per_length,
     const double h = length / cells_per_length;
     Particles<2> column;
     add_box_particles<2>(column, axis_box(Vec3(0.0, -0.5, 0.0), Vec3(length, 0.5, height)), h / 2.0,
-                         kCollapseDensity);
+                         kSoilDensity);
     SolverSettings s;
     s.threads = 1;
     s.cell_size = h;
@@ -238,7 +238,7 @@ double deposit_front(const ColumnCollapse& collapse, double thickness) {
         if (x < 0.0) continue;
         const auto column = static_cast<std::size_t>(x / h);
         if (column >= area.size()) area.resize(column + 1, 0.0);
-        area[column] += collapse.deposit_mass[i] / kCollapseDensity;
+        area[column] += collapse.deposit_mass[i] / kSoilDensity;
     }
     double front = 0.0;
     for (std::size_t c = 0; c < area.size(); ++c) {
@@ -299,7 +299,7 @@ LayerSlide sliding_layer(double cell_size, double thickness, double friction_ang
     const double h = cell_size;
     Particles<2> layer;
     add_box_particles<2>(layer, axis_box(Vec3(0.0, -0.5, 0.0), Vec3(length, 0.5, thickness)),
-                         h / 2.0, kCollapseDensity);
+                         h / 2.0, kSoilDensity);
     for (Vec<2>& v : layer.velocity) v = Vec<2>(v0, 0.0);
     SolverSettings s;
     s.threads = 1;
