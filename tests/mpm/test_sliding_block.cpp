@@ -50,16 +50,19 @@ TEST_CASE("Block stays on a 25 degree incline with a 30 degree basal friction an
 
 // A soil layer sliding on the floor stops as a rigid block does, a = tan(phi_b) g, whether it is
 // a fraction of a cell thick or several cells: the basal friction acts on the floor's node
-// layer, and the soil (phi 30 deg) carries the basal shear up through the layer. Measured
-// (h = 0.01 m): -0.0 / -0.1 / -1.1 % at 0.25 / 1 / 4 cells and phi_b 30 deg. Thicker layers (8,
-// 16 cells: -4, -15 %) lose more, as their free ends slump and come to rest before the middle;
-// above the soil's own strength (phi_b 45 deg) the soil shears instead (4 cells: -14 %). The
-// check behind the column collapse's thin tail (docs/soil.md, Verification).
+// layer, and the soil (phi 30 deg, dilatancy 0) carries the basal shear up through the layer.
+// Measured (h = 0.01 m, 0.25 / 1 / 4 cells): phi_b 10 deg -0.01 / -0.03 / -0.1 %, 20 deg -0.01 /
+// -0.07 / -0.6 %. Thicker layers lose more (16 cells: -4 and -6 %), as their free ends slump.
+// Above the soil's own strength in steady shear (tau / sigma = eta = 0.48 with dilatancy 0) a
+// layer many cells thick shears inside instead (16 cells: 0.49 g at phi_b 30 and 45 deg) while
+// one of a few cells is dragged whole (4 cells, 30 deg: 0.571 g), so those cases are not checked
+// against tan(phi_b) g. The check behind the column collapse's thin tail
+// (docs/column_collapse.md).
 TEST_CASE("Soil layers of a quarter cell to four cells slide to rest at tan(phi_b) g",
           "[mpm][verification]") {
     const double h = 0.01;
     for (const double cells : {0.25, 1.0, 4.0}) {
-        for (const double phi_b : {20.0, 30.0}) {
+        for (const double phi_b : {10.0, 20.0}) {
             const auto layer = rockfall::mpm::verification::sliding_layer(h, cells * h, phi_b);
             WARN(cells << " cells, phi_b " << phi_b << " deg: a = " << layer.fitted_deceleration
                        << " m/s2 vs " << layer.expected_deceleration);
