@@ -50,6 +50,7 @@ struct SoilArgs {
     std::string svg;
     std::string refine;
     std::optional<double> steady_window;
+    std::optional<int> repeats;
 };
 
 // Writes particle frames as DIR/frame_NNNNN.vtk. The solver's callback must not throw, so the
@@ -162,11 +163,20 @@ void run_refinement_command(const SoilArgs& args) {
     } else {
         settings.steady_window = std::min(settings.steady_window, duration);
     }
+    if (args.repeats) {
+        if (*args.repeats < 1 || *args.repeats > mpm::kMaxRepeats) {
+            throw std::invalid_argument("--repeats = " + std::to_string(*args.repeats) +
+                                        ": must be an integer in [1, " +
+                                        std::to_string(mpm::kMaxRepeats) + "]");
+        }
+        settings.repeats = *args.repeats;
+    }
     report::RefinementContext context{
         args.scenario,          file.scenario.numerics.dimension,   duration,
         settings.steady_window, file.scenario.output.filter_window, {}};
     const int count = static_cast<int>(settings.cell_sizes.size());
-    std::fprintf(stderr, "refinement study: %d levels of %g s of flow each\n", count, duration);
+    std::fprintf(stderr, "refinement study: %d levels of %g s of flow each, %d run(s) per level\n",
+                 count, duration, settings.repeats);
     auto start = std::chrono::steady_clock::now();
     const mpm::RefinementStudy study =
         mpm::run_refinement(file.scenario, settings, [&](int i, const mpm::RefinementLevel& level) {
@@ -213,6 +223,9 @@ void run_soil_command(const SoilArgs& args) {
     }
     if (args.steady_window) {
         throw std::invalid_argument("--steady-window applies only with --refine");
+    }
+    if (args.repeats) {
+        throw std::invalid_argument("--repeats applies only with --refine");
     }
     const scenario::SoilFile file = scenario::load_soil_scenario(args.scenario);
     // Read the measured record and refuse a mismatch (units, or no shared times) now rather
@@ -330,6 +343,10 @@ void register_soil(CLI::App& app) {
     cmd->add_option("--steady-window", args->steady_window,
                     "With --refine: the steady wall load is the mean over this last part of the "
                     "run, s (default 1 s, at most output.duration)");
+    cmd->add_option("--repeats", args->repeats,
+                    "With --refine: run each level this many times (1 to 20, default 1), run k "
+                    "with numerics.cfl times (1 - k 1e-4), and report the means and how far the "
+                    "runs spread: a flow that amplifies small perturbations shows it");
     cmd->callback([args] { run_soil_command(*args); });
 }
 

@@ -5,11 +5,27 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace rockfall::mpm {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A quantity of a level and its range over the level's runs.
+struct LevelQuantity {
+    double RefinementLevel::*value;
+    ValueRange RefinementLevel::*range;
+};
+
+constexpr LevelQuantity kLevelQuantities[] = {
+    {&RefinementLevel::peak_wall_force, &RefinementLevel::peak_wall_force_range},
+    {&RefinementLevel::peak_time, &RefinementLevel::peak_time_range},
+    {&RefinementLevel::peak_wall_force_filtered, &RefinementLevel::peak_wall_force_filtered_range},
+    {&RefinementLevel::steady_wall_force, &RefinementLevel::steady_wall_force_range},
+    {&RefinementLevel::runout_past_toe, &RefinementLevel::runout_past_toe_range},
+};
 
 RichardsonEstimate extrapolate(const std::vector<RefinementLevel>& levels, double ratio,
                                double RefinementLevel::*field) {
@@ -80,6 +96,36 @@ RefinementLevel refinement_level(const SoilOutcome& o, double cell_size, double 
         }
         level.steady_wall_force = count > 0 ? sum / count : 0.0;
     }
+    for (const LevelQuantity& q : kLevelQuantities) {
+        level.*q.range = {level.*q.value, level.*q.value};
+    }
+    return level;
+}
+
+RefinementLevel mean_of_runs(const std::vector<RefinementLevel>& runs) {
+    if (runs.empty()) {
+        throw std::invalid_argument("mean_of_runs: no runs");
+    }
+    RefinementLevel level = runs.front();
+    level.runs = static_cast<int>(runs.size());
+    double steps = 0.0;
+    for (const RefinementLevel& run : runs) {
+        steps += static_cast<double>(run.steps);
+        if (level.status == SoilStatus::completed) level.status = run.status;
+    }
+    level.steps = std::lround(steps / static_cast<double>(runs.size()));
+    for (const LevelQuantity& q : kLevelQuantities) {
+        double sum = 0.0;
+        ValueRange range{runs.front().*q.value, runs.front().*q.value};
+        for (const RefinementLevel& run : runs) {
+            const double v = run.*q.value;
+            sum += v;
+            range.min = std::min(range.min, v);
+            range.max = std::max(range.max, v);
+        }
+        level.*q.value = sum / static_cast<double>(runs.size());
+        level.*q.range = range;
+    }
     return level;
 }
 
@@ -130,11 +176,20 @@ RefinementStudy run_refinement(const SoilScenario& scenario, const RefinementSet
                 << " s: must be in (0, output.duration = " << scenario.output.duration << " s]";
         throw std::invalid_argument(message.str());
     }
+    if (settings.repeats < 1 || settings.repeats > kMaxRepeats) {
+        throw std::invalid_argument("refine.repeats = " + std::to_string(settings.repeats) +
+                                    ": must be in [1, " + std::to_string(kMaxRepeats) + "]");
+    }
     RefinementStudy study;
     for (std::size_t i = 0; i < cells.size(); ++i) {
-        SoilScenario level = scenario;
-        level.numerics.cell_size = cells[i];
-        study.levels.push_back(refinement_level(run_soil(level), cells[i], settings.steady_window));
+        std::vector<RefinementLevel> runs;
+        for (int k = 0; k < settings.repeats; ++k) {
+            SoilScenario level = scenario;
+            level.numerics.cell_size = cells[i];
+            level.numerics.cfl *= 1.0 - k * kRepeatTimeStepChange;
+            runs.push_back(refinement_level(run_soil(level), cells[i], settings.steady_window));
+        }
+        study.levels.push_back(mean_of_runs(runs));
         if (progress) {
             progress(static_cast<int>(i), study.levels.back());
         }

@@ -3,6 +3,7 @@
 #include "report/query_table.hpp"
 #include "report/text_format.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rockfall::report {
@@ -25,19 +26,27 @@ struct Quantity {
     std::string key;
     double scale;
     const mpm::RichardsonEstimate mpm::RefinementStudy::*estimate;
+    double mpm::RefinementLevel::*value;
+    mpm::ValueRange mpm::RefinementLevel::*range;
 };
 
 std::vector<Quantity> quantities(int dimension) {
     const LoadUnits u = load_units(dimension);
     return {
         {"peak wall load", u.text, u.key("peak_wall_force_N"), 1e-3,
-         &mpm::RefinementStudy::peak_wall_force},
-        {"time of peak", "s", "peak_time_s", 1.0, &mpm::RefinementStudy::peak_time},
+         &mpm::RefinementStudy::peak_wall_force, &mpm::RefinementLevel::peak_wall_force,
+         &mpm::RefinementLevel::peak_wall_force_range},
+        {"time of peak", "s", "peak_time_s", 1.0, &mpm::RefinementStudy::peak_time,
+         &mpm::RefinementLevel::peak_time, &mpm::RefinementLevel::peak_time_range},
         {"filtered peak", u.text, u.key("peak_wall_force_filtered_N"), 1e-3,
-         &mpm::RefinementStudy::peak_wall_force_filtered},
+         &mpm::RefinementStudy::peak_wall_force_filtered,
+         &mpm::RefinementLevel::peak_wall_force_filtered,
+         &mpm::RefinementLevel::peak_wall_force_filtered_range},
         {"steady wall load", u.text, u.key("steady_wall_force_N"), 1e-3,
-         &mpm::RefinementStudy::steady_wall_force},
-        {"runout past toe", "m", "runout_past_toe_m", 1.0, &mpm::RefinementStudy::runout_past_toe},
+         &mpm::RefinementStudy::steady_wall_force, &mpm::RefinementLevel::steady_wall_force,
+         &mpm::RefinementLevel::steady_wall_force_range},
+        {"runout past toe", "m", "runout_past_toe_m", 1.0, &mpm::RefinementStudy::runout_past_toe,
+         &mpm::RefinementLevel::runout_past_toe, &mpm::RefinementLevel::runout_past_toe_range},
     };
 }
 
@@ -45,6 +54,34 @@ std::string status_note(const mpm::RefinementLevel& level) {
     return level.status == mpm::SoilStatus::completed
                ? ""
                : std::string(" (") + mpm::status_name(level.status) + ")";
+}
+
+// (largest - smallest) / |mean| over a level's runs, in %.
+double spread_percent(const mpm::RefinementLevel& level, const Quantity& q) {
+    const mpm::ValueRange& r = level.*q.range;
+    const double mean = level.*q.value;
+    return mean != 0.0 ? 100.0 * (r.max - r.min) / std::abs(mean) : 0.0;
+}
+
+// With several runs per level: how far the runs of each level spread.
+void print_spread(std::ostream& out, const mpm::RefinementStudy& study, int dimension) {
+    int runs = 1;
+    for (const mpm::RefinementLevel& l : study.levels) runs = std::max(runs, l.runs);
+    if (runs == 1) return;
+    out << "each level is the mean of " << runs << " runs, run k with numerics.cfl times (1 - k "
+        << fmt("%g", mpm::kRepeatTimeStepChange)
+        << "); spread between the runs, (largest - smallest) / mean:\n";
+    char line[256];
+    std::snprintf(line, sizeof line, "%10s %12s %10s %16s %13s %10s", "cell (m)", "peak (%)",
+                  "t peak (%)", "filtered (%)", "steady (%)", "runout (%)");
+    out << line << '\n';
+    const std::vector<Quantity> q = quantities(dimension);
+    for (const mpm::RefinementLevel& l : study.levels) {
+        std::snprintf(line, sizeof line, "%10.4f %12.1f %10.1f %16.1f %13.1f %10.1f", l.cell_size,
+                      spread_percent(l, q[0]), spread_percent(l, q[1]), spread_percent(l, q[2]),
+                      spread_percent(l, q[3]), spread_percent(l, q[4]));
+        out << line << '\n';
+    }
 }
 
 }  // namespace
@@ -55,8 +92,9 @@ std::string refinement_progress_line(const mpm::RefinementLevel& level, int inde
     return "refinement level " + std::to_string(index + 1) + " of " + std::to_string(count) +
            ": cell " + fmt("%g m", level.cell_size) + ", " + std::to_string(level.particles) +
            " particles, peak " + fmt("%.2f ", 1e-3 * level.peak_wall_force) + u.text + ", steady " +
-           fmt("%.2f ", 1e-3 * level.steady_wall_force) + u.text + ", " + fmt("%.1f s", runtime) +
-           status_note(level);
+           fmt("%.2f ", 1e-3 * level.steady_wall_force) + u.text +
+           (level.runs > 1 ? " (means of " + std::to_string(level.runs) + " runs)" : "") + ", " +
+           fmt("%.1f s", runtime) + status_note(level);
 }
 
 void print_refinement(std::ostream& out, const mpm::RefinementStudy& study,
@@ -83,6 +121,7 @@ void print_refinement(std::ostream& out, const mpm::RefinementStudy& study,
                       l.runout_past_toe);
         out << line << (timed ? fmt(" %10.1f", context.runtime[i]) : "") << status_note(l) << '\n';
     }
+    print_spread(out, study, context.dimension);
     if (!study.extrapolated) {
         out << (study.levels.size() < 3
                     ? "no extrapolation: it needs three levels\n"
@@ -126,6 +165,13 @@ nlohmann::ordered_json refinement_json(const mpm::RefinementStudy& study,
             {u.key("steady_wall_force_N"), l.steady_wall_force},
             {"runout_past_toe_m", l.runout_past_toe},
         };
+        level["runs"] = l.runs;
+        nlohmann::ordered_json ranges;
+        for (const Quantity& q : quantities(context.dimension)) {
+            const mpm::ValueRange& r = l.*q.range;
+            ranges[q.key] = {{"min", r.min}, {"max", r.max}};
+        }
+        level["range"] = std::move(ranges);
         if (timed) level["runtime_s"] = context.runtime[i];
         levels.push_back(std::move(level));
     }

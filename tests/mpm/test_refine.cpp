@@ -1,5 +1,7 @@
 // Richardson extrapolation on sequences with a known limit and order, and the refinement
 // study's input checks.
+#include "helpers.hpp"
+
 #include "mpm/refine.hpp"
 
 #include <catch2/catch.hpp>
@@ -103,4 +105,69 @@ TEST_CASE("Refinement study: no extrapolation when a fine level did not complete
     study.levels.front().status = SoilStatus::left_domain;
     extrapolate_study(study);
     CHECK(study.extrapolated);
+}
+
+TEST_CASE("Refinement level of several runs: means, ranges, first failure", "[mpm][refine]") {
+    std::vector<RefinementLevel> runs(3);
+    const double peaks[] = {9.0, 12.0, 10.5};
+    for (int k = 0; k < 3; ++k) {
+        runs[k].cell_size = 0.1;
+        runs[k].particles = 400;
+        runs[k].steps = 100 + k;
+        runs[k].peak_wall_force = peaks[k];
+        runs[k].peak_time = 3.0;
+        runs[k].peak_wall_force_filtered = 7.0 + k;
+        runs[k].steady_wall_force = 5.0;
+        runs[k].runout_past_toe = 0.5 - 0.01 * k;
+    }
+    runs[2].status = SoilStatus::left_domain;
+    const RefinementLevel level = mean_of_runs(runs);
+    CHECK(level.runs == 3);
+    CHECK(level.particles == 400);
+    CHECK(level.steps == 101);
+    CHECK(level.status == SoilStatus::left_domain);
+    CHECK_THAT(level.peak_wall_force, WithinRel(10.5, 1e-12));
+    CHECK(level.peak_wall_force_range.min == 9.0);
+    CHECK(level.peak_wall_force_range.max == 12.0);
+    CHECK_THAT(level.peak_wall_force_filtered, WithinRel(8.0, 1e-12));
+    CHECK(level.steady_wall_force_range.min == level.steady_wall_force_range.max);
+    CHECK_THAT(level.runout_past_toe, WithinRel(0.49, 1e-12));
+    CHECK_THAT(level.runout_past_toe_range.min, WithinRel(0.48, 1e-12));
+    CHECK_THROWS_AS(mean_of_runs({}), std::invalid_argument);
+}
+
+TEST_CASE("Refinement study with repeats: each level the mean of runs with the step changed",
+          "[mpm][refine]") {
+    SoilScenario s = test::quick_2d(0.4);
+    RefinementSettings settings;
+    settings.cell_sizes = {0.4, 0.2};
+    settings.steady_window = 0.5;
+    settings.repeats = 2;
+    const RefinementStudy study = run_refinement(s, settings);
+    REQUIRE(study.levels.size() == 2);
+    for (const RefinementLevel& level : study.levels) {
+        std::vector<RefinementLevel> runs;
+        for (int k = 0; k < 2; ++k) {
+            SoilScenario run = s;
+            run.numerics.cell_size = level.cell_size;
+            run.numerics.cfl *= 1.0 - k * kRepeatTimeStepChange;
+            runs.push_back(refinement_level(run_soil(run), level.cell_size, 0.5));
+        }
+        CHECK(level.runs == 2);
+        CHECK(level.runout_past_toe == 0.5 * (runs[0].runout_past_toe + runs[1].runout_past_toe));
+        CHECK(level.runout_past_toe_range.min ==
+              std::min(runs[0].runout_past_toe, runs[1].runout_past_toe));
+        CHECK(level.steps == std::lround(0.5 * static_cast<double>(runs[0].steps + runs[1].steps)));
+        CHECK(level.peak_wall_force == 0.5 * (runs[0].peak_wall_force + runs[1].peak_wall_force));
+        CHECK(level.peak_wall_force_range.max ==
+              std::max(runs[0].peak_wall_force, runs[1].peak_wall_force));
+    }
+    // The second run took another time step: at 0.2 m the flow reaches the wall, and its peak
+    // differs (by about 0.1 %).
+    CHECK(study.levels[1].peak_wall_force_range.max > study.levels[1].peak_wall_force_range.min);
+    settings.repeats = 0;
+    CHECK_THROWS_WITH(run_refinement(s, settings),
+                      Catch::Contains("refine.repeats = 0: must be in [1, 20]"));
+    settings.repeats = kMaxRepeats + 1;
+    CHECK_THROWS_WITH(run_refinement(s, settings), Catch::Contains("refine.repeats = 21"));
 }
