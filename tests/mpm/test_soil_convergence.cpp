@@ -5,8 +5,8 @@
 // locking of a perfectly plastic flow at zero dilatancy (docs/soil.md, Refinement study).
 // Measured 2026-12-04: averaged 5.09 / 5.07 / 5.34 kN/m at 0.05 / 0.025 / 0.0125 m; own rates
 // 4.51 / 5.05 / 5.57 kN/m. 2026-12-06: 5.09 / 5.12 / 5.06 kN/m; means of five runs with the
-// time step changed by up to 0.03 % 5.09 / 5.13 / 5.23 kN/m (the fine levels scatter by up to 6 %
-// between such runs, docs/soil.md, Refinement study).
+// time step changed by up to 0.04 % (--repeats 5) 5.09 / 5.02 / 5.30 kN/m (the fine levels
+// scatter by up to 11 % between such runs, docs/soil.md, Refinement study).
 #include "helpers.hpp"
 
 #include "mpm/refine.hpp"
