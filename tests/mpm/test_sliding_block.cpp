@@ -52,7 +52,7 @@ TEST_CASE("Block stays on a 25 degree incline with a 30 degree basal friction an
 // a fraction of a cell thick or several cells: the basal friction acts on the floor's node
 // layer, and the soil (phi 30 deg, dilatancy 0) carries the basal shear up through the layer.
 // Measured (h = 0.01 m, 0.25 / 1 / 4 cells): phi_b 10 deg -0.01 / -0.03 / -0.1 %, 20 deg -0.01 /
-// -0.07 / -0.6 %. Thicker layers lose more (16 cells: -4 and -6 %), as their free ends slump.
+// -0.07 / -0.6 %. Thicker layers lose more (16 cells: -4 and -6 %; their free ends slump).
 // Above the soil's own strength in steady shear (tau / sigma = eta = 0.48 with dilatancy 0) a
 // layer many cells thick shears inside instead (16 cells: 0.49 g at phi_b 30 and 45 deg) while
 // one of a few cells is dragged whole (4 cells, 30 deg: 0.571 g), so those cases are not checked
