@@ -180,6 +180,30 @@ double lube_runout(double a) {
 
 double lajeunesse_runout(double a) { return a < 3.0 ? 1.8 * a : 2.3 * std::pow(a, 2.0 / 3.0); }
 
+namespace {
+
+// The soil of the collapse and the sliding layer: Drucker-Prager, phi 30 deg matched in plane
+// strain, no cohesion, dilatancy 0, E 1 MPa, nu 0.3, started geostatic with K0 = nu / (1 - nu).
+DruckerPrager verification_soil() {
+    DruckerPrager soil;
+    soil.youngs_modulus = 1.0e6;
+    soil.poisson_ratio = 0.3;
+    soil.friction_angle_deg = 30.0;
+    soil.cohesion = 0.0;
+    soil.match = ConeMatch::plane_strain;
+    return soil;
+}
+
+constexpr double kSoilK0 = 0.3 / 0.7;
+
+// The floor z <= 0 (boundary group 0) with friction coefficient mu.
+StaticBoundary floor_solid(double mu) {
+    return solid(axis_box(Vec3(-1.0, -1.0, -1.0), Vec3(10.0, 1.0, 0.0)), BoundaryKind::frictional,
+                 mu, 0);
+}
+
+}  // namespace
+
 ColumnCollapse column_collapse(double aspect, int cells_per_length,
                                const CollapseNumerics& numerics) {
     if (!(aspect > 0.0) || cells_per_length < 4) {
@@ -199,18 +223,11 @@ ColumnCollapse column_collapse(double aspect, int cells_per_length,
     s.domain_min = Vec3(-0.1, 0.0, -0.1);
     s.domain_max = Vec3(length * (1.0 + 2.5 * aspect) + 0.3, 0.0, height + 0.1);
     const double mu = std::tan(std::numbers::pi / 6.0);
-    std::vector<StaticBoundary> box{solid(axis_box(Vec3(-1.0, -1.0, -1.0), Vec3(10.0, 1.0, 0.0)),
-                                          BoundaryKind::frictional, mu, 0),
+    std::vector<StaticBoundary> box{floor_solid(mu),
                                     solid(axis_box(Vec3(-1.0, -1.0, -1.0), Vec3(0.0, 1.0, 10.0)),
                                           BoundaryKind::frictional, mu, 1)};
-    DruckerPrager soil;
-    soil.youngs_modulus = 1.0e6;
-    soil.poisson_ratio = 0.3;
-    soil.friction_angle_deg = 30.0;
-    soil.cohesion = 0.0;
-    soil.match = ConeMatch::plane_strain;
-    Solver<2> solver(s, soil, std::move(column), std::move(box));
-    set_geostatic_stress<2>(solver.particles(), height, g, 0.3 / 0.7);
+    Solver<2> solver(s, verification_soil(), std::move(column), std::move(box));
+    set_geostatic_stress<2>(solver.particles(), height, g, kSoilK0);
     ColumnCollapse result;
     result.aspect = aspect;
     result.cells_per_length = cells_per_length;
@@ -308,16 +325,8 @@ LayerSlide sliding_layer(double cell_size, double thickness, double friction_ang
     s.domain_min = Vec3(-0.2, 0.0, -4.0 * h);
     s.domain_max = Vec3(length + 0.6, 0.0, thickness + 0.2);
     const double mu = std::tan(to_radians(friction_angle_deg));
-    std::vector<StaticBoundary> floor{solid(axis_box(Vec3(-1.0, -1.0, -1.0), Vec3(10.0, 1.0, 0.0)),
-                                            BoundaryKind::frictional, mu, 0)};
-    DruckerPrager soil;
-    soil.youngs_modulus = 1.0e6;
-    soil.poisson_ratio = 0.3;
-    soil.friction_angle_deg = 30.0;
-    soil.cohesion = 0.0;
-    soil.match = ConeMatch::plane_strain;
-    Solver<2> solver(s, soil, std::move(layer), std::move(floor));
-    set_geostatic_stress<2>(solver.particles(), thickness, g, 0.3 / 0.7);
+    Solver<2> solver(s, verification_soil(), std::move(layer), {floor_solid(mu)});
+    set_geostatic_stress<2>(solver.particles(), thickness, g, kSoilK0);
     const double mass = solver.particles().total_mass();
     // Least-squares line v = v0 - a t through the mean velocity of every step.
     double st = 0.0, sv = 0.0, stt = 0.0, stv = 0.0, n = 0.0;
