@@ -48,6 +48,7 @@ struct SweepArgs {
     bool quiet = false;
     double trajectory_interval = 0.0;
     std::int64_t crash_after = -1;
+    std::int64_t pause_after = -1;
     bool interrupt_at_create = false;
     /// Names of the options given on the command line ("--seed", "scenario", ...): with
     /// --resume, every result-deciding option not among them takes the database's value.
@@ -242,6 +243,7 @@ int serve_rank(mpi::Session& session, SweepArgs& args) {
     risk::RunnerOptions options;
     options.threads = thread_count(args.threads);
     options.trajectory_interval = setup->trajectory_interval;
+    session.pause_after(args.pause_after);
     try {
         return session.serve(effective_spec(as_stored, args), as_stored.scenario, options,
                              interrupt_signal);
@@ -380,15 +382,19 @@ int sweep_as_owner(SweepArgs& args, mpi::Session* session) {
         const auto now = std::chrono::steady_clock::now();
         // Batches bound the work lost to a crash (one second) and amortise the commit.
         // The crash test writes every sample at once, so that it crashes after exactly
-        // --crash-after samples however fast the machine is.
-        const std::size_t batch_limit = args.crash_after >= 0 ? 1 : 256;
+        // --crash-after samples however fast the machine is; so does the pause test.
+        const std::size_t batch_limit = args.crash_after >= 0 || args.pause_after >= 0 ? 1 : 256;
         if (batch.size() >= batch_limit ||
             (!batch.empty() && now - last_write > std::chrono::seconds(1))) {
+            const std::int64_t before = done;
             results.write_batch(batch);
             done += static_cast<std::int64_t>(batch.size());
             batch.clear();
             last_write = now;
             if (args.crash_after >= 0 && done >= args.crash_after) crash_mid_batch(results);
+            if (!session && args.pause_after >= 0 && before < args.pause_after &&
+                done >= args.pause_after)
+                std::raise(SIGSTOP);
         }
         progress.update(done, note());
         if (interrupt_signal.load() != 0 || (monitor && monitor->stop_at())) runner.stop();
@@ -484,6 +490,10 @@ void register_sweep(CLI::App& app) {
         ->capture_default_str();
     // For the resume tests: crash in the middle of a batch once this many samples are stored.
     cmd->add_option("--crash-after", args->crash_after)->group("");
+    // For the signal tests: SIGSTOP to itself once this many samples are stored (one process)
+    // or sent to rank 0 (the other ranks of an MPI sweep), so that the test's signal, sent
+    // while it is stopped and delivered on SIGCONT, lands mid-run however fast the machine is.
+    cmd->add_option("--pause-after", args->pause_after)->group("");
     // For the interrupt test: SIGINT to itself just before the database is created.
     cmd->add_flag("--interrupt-at-create", args->interrupt_at_create)->group("");
     cmd->callback([args, cmd] {

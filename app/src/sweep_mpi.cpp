@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <csignal>
 #include <mpi.h>
 #include <stdexcept>
 #include <string>
@@ -246,6 +247,7 @@ int Session::serve(const risk::SweepSpec& spec, const engine::Scenario& base,
     bool requested = false;
     bool no_more = false;
     bool interrupt_sent = false;
+    std::int64_t sent = 0;
     for (;;) {
         if (!no_more && !requested &&
             runner.waiting() < static_cast<std::size_t>(options.threads)) {
@@ -281,9 +283,13 @@ int Session::serve(const risk::SweepSpec& spec, const engine::Scenario& base,
             interrupt_sent = true;
         }
         std::string bytes;
-        for (const risk::SampleResult& result : runner.collect(std::chrono::milliseconds(2)))
+        const std::int64_t before = sent;
+        for (const risk::SampleResult& result : runner.collect(std::chrono::milliseconds(2))) {
             db::encode_sample(result, bytes);
+            ++sent;
+        }
         if (!bytes.empty()) send_bytes(bytes, owner, results);
+        if (pause_after_ >= 0 && before < pause_after_ && sent >= pause_after_) std::raise(SIGSTOP);
         if (no_more && !requested && runner.finished()) break;
     }
     check(MPI_Send(nullptr, 0, MPI_BYTE, owner, done, MPI_COMM_WORLD), "send");

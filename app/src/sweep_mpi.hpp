@@ -92,6 +92,11 @@ class Session {
     int serve(const risk::SweepSpec& spec, const engine::Scenario& base,
               const risk::RunnerOptions& options, const std::atomic<int>& interrupt);
 
+    /// For the signal tests (--pause-after): serve() stops this process (SIGSTOP to itself)
+    /// once it has sent `samples` samples, so that a test's signal lands mid-run however fast
+    /// the machine is; negative: never.
+    void pause_after(std::int64_t samples) { pause_after_ = samples; }
+
     /// Whether rank 0 sent its setup and the other ranks have not all ended yet.
     bool others_running() const;
     /// Ends every rank at once (MPI_Abort) with `code`; for a rank that cannot go on.
@@ -101,6 +106,7 @@ class Session {
     int rank_ = 0;
     int size_ = 1;
     bool setup_sent_ = false;
+    std::int64_t pause_after_ = -1;
     // Set by the owner source once every other rank has said it is done.
     std::shared_ptr<bool> others_done_ = std::make_shared<bool>(false);
 };

@@ -36,18 +36,39 @@ task() {
 }
 task 0
 task 1
-# Task 2 stopped by SIGTERM to its script once its node-local shard holds 5 samples.
+# Task 2 stopped by SIGTERM to its script mid-run. Its sweep runs through a wrapper that adds
+# the hidden --pause-after 5: it stops itself (SIGSTOP) once its node-local shard holds 5
+# samples. SIGTERM then goes to the script, whose trap passes it on to the stopped sweep (the
+# signal waits, pending); SIGCONT lets the sweep take it. However fast the machine, the signal
+# lands mid-run.
+printf '#!/bin/sh\nexec "%s" "$@" --pause-after 5\n' "$rockfall" >"$work/pausing_rockfall"
+chmod +x "$work/pausing_rockfall"
 mkdir -p "$work/node2"
-(cd "$work" && exec env SLURM_ARRAY_TASK_ID=2 SLURM_TMPDIR=$work/node2 bash "$work/sweep_array.sh") &
+(cd "$work" && exec env SLURM_ARRAY_TASK_ID=2 SLURM_TMPDIR=$work/node2 \
+    ROCKFALL="$work/pausing_rockfall" bash "$work/sweep_array.sh") &
 pid=$!
-stored=0
-for _ in $(seq 600); do
-    [ -f "$work/node2/rockfall_shard_2.db" ] &&
-        stored=$(sqlite3 "$work/node2/rockfall_shard_2.db" "SELECT count(*) FROM samples" 2>/dev/null || echo 0)
-    [ "$stored" -ge 5 ] && break
+# state PID: the process's state letter (T: stopped), or nothing once it is gone.
+state() { awk '{print $3}' "/proc/$1/stat" 2>/dev/null || true; }
+# pending_term PID: whether SIGTERM (15) waits, undelivered, for the process (1 << 14 in ShdPnd).
+pending_term() {
+    local mask
+    mask=$(awk '/^ShdPnd:/ {print $2}' "/proc/$1/status" 2>/dev/null || echo 0)
+    (((0x$mask >> 14) & 1))
+}
+sweep=
+for _ in $(seq 1200); do
+    sweep=$(pgrep -P "$pid" || true)
+    [ -n "$sweep" ] && [ "$(state "$sweep")" = T ] && break
     sleep 0.05
 done
+[ -n "$sweep" ] && [ "$(state "$sweep")" = T ] || fail "task 2's sweep did not pause after 5 samples"
 kill -TERM "$pid"
+for _ in $(seq 1200); do
+    pending_term "$sweep" && break
+    sleep 0.05
+done
+pending_term "$sweep" || fail "the job-array script did not pass SIGTERM on to its sweep"
+kill -CONT "$sweep"
 set +e
 wait "$pid"
 code=$?

@@ -1,8 +1,6 @@
 #!/usr/bin/env bash
 # sweep_interrupt.sh ROCKFALL SCENARIO WORKDIR: Ctrl-C (SIGINT) during a sweep stores the
-# finished samples, marks the run interrupted and exits 130; --resume then completes it. 600
-# samples take about 10 s on one thread, so the interrupt comes long before the end even on a
-# loaded machine (the first batch is stored after 1 s).
+# finished samples, marks the run interrupted and exits 130; --resume then completes it.
 # A SIGINT while the database is being created (sent by the sweep to itself just before, with
 # the hidden --interrupt-at-create) ends the run the same way: a whole file marked interrupted,
 # no hidden part file left, exit 130, and --resume completes it.
@@ -10,23 +8,21 @@ set -euo pipefail
 rockfall=$1 scenario=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
 db="$work/interrupted.db"
-"$rockfall" sweep "$scenario" --db "$db" --threads 1 --samples 600 >"$work/out.txt" 2>&1 &
+# The sweep stops itself (SIGSTOP, the hidden --pause-after) once 5 samples are stored; the
+# SIGINT sent while it is stopped is taken on SIGCONT, mid-run however fast the machine is.
+"$rockfall" sweep "$scenario" --db "$db" --threads 1 --samples 600 --pause-after 5 \
+    >"$work/out.txt" 2>&1 &
 pid=$!
-# Wait until some samples are stored, then interrupt. The poll must not create the file: the
-# sqlite3 shell creates an empty database at a missing path, which rockfall then refuses as an
-# existing file. So only a file that exists is opened, and read-only (mode=ro creates nothing).
-n=0
-for _ in $(seq 300); do
-    sleep 0.1
-    kill -0 "$pid" 2>/dev/null || break
-    [ -f "$db" ] || continue
-    n=$(sqlite3 "file:$db?mode=ro" "SELECT count(*) FROM samples" 2>/dev/null || echo 0)
-    [ "${n:-0}" -gt 0 ] && break
+for _ in $(seq 1200); do
+    [ "$(awk '{print $3}' "/proc/$pid/stat" 2>/dev/null)" = T ] && break
+    sleep 0.05
 done
-if ! kill -INT "$pid" 2>/dev/null; then
+if ! [ "$(awk '{print $3}' "/proc/$pid/stat" 2>/dev/null)" = T ]; then
     cat "$work/out.txt"
-    echo "the sweep ended before it could be interrupted ($n samples seen)"; exit 1
+    echo "the sweep did not pause after 5 samples"; exit 1
 fi
+kill -INT "$pid"
+kill -CONT "$pid"
 set +e
 wait "$pid"
 code=$?

@@ -34,27 +34,34 @@ equal)
     echo "crashed in one process, resumed over 3 ranks: equal"
     ;;
 signals)
-    # stop_rank SIGNAL RANK NAME: starts the sweep over 3 ranks into NAME.db, sends SIGNAL to
-    # rank RANK once 10 samples are stored and sets `code` to mpirun's exit code.
+    # stop_rank SIGNAL RANK NAME: starts the sweep over 3 ranks into NAME.db, whose ranks 1
+    # and 2 stop themselves (SIGSTOP, the hidden --pause-after) once each has sent 3 samples;
+    # then SIGNAL goes to rank RANK while it is stopped, SIGCONT to both, and `code` is set to
+    # mpirun's exit code. Rank 0 cannot finish the run while the others hold unfinished
+    # chunks, so the signal lands mid-run however fast the machine is.
     stop_rank() {
-        local signal=$1 rank=$2 name=$3 db=$work/$3.db pid p stored=0
+        local signal=$1 rank=$2 name=$3 db=$work/$3.db pid p r state
+        local -A by_rank=()
         shift 3
         # mpirun itself in the background (not the mpi function's subshell): its children
         # are the ranks.
         "$mpiexec" --allow-run-as-root --oversubscribe -np 3 "$rockfall" sweep "$scenario" \
-            --db "$db" --threads 1 --quiet "$@" >"$work/$name.out" 2>&1 &
+            --db "$db" --threads 1 --quiet --pause-after 3 "$@" >"$work/$name.out" 2>&1 &
         pid=$!
-        for _ in $(seq 600); do
-            [ -f "$db" ] && stored=$(sqlite3 "$db" "SELECT count(*) FROM samples" 2>/dev/null || echo 0)
-            [ "$stored" -ge 10 ] && break
+        for _ in $(seq 1200); do
+            for p in $(pgrep -P "$pid"); do
+                r=$(tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | sed -n 's/^OMPI_COMM_WORLD_RANK=//p')
+                state=$(awk '{print $3}' "/proc/$p/stat" 2>/dev/null || true)
+                [ -n "$r" ] && [ "$state" = T ] && by_rank[$r]=$p
+            done
+            [ -n "${by_rank[1]:-}" ] && [ -n "${by_rank[2]:-}" ] && break
+            kill -0 "$pid" 2>/dev/null || break
             sleep 0.05
         done
-        [ "$stored" -ge 10 ] || fail "the sweep over ranks stored no samples: $(cat "$work/$name.out")"
-        for p in $(pgrep -P "$pid"); do
-            if tr '\0' '\n' <"/proc/$p/environ" | grep -qx "OMPI_COMM_WORLD_RANK=$rank"; then
-                kill "-$signal" "$p"
-            fi
-        done
+        [ -n "${by_rank[1]:-}" ] && [ -n "${by_rank[2]:-}" ] ||
+            fail "ranks 1 and 2 did not pause after 3 samples: $(cat "$work/$name.out")"
+        kill "-$signal" "${by_rank[$rank]}"
+        kill -CONT "${by_rank[1]}" "${by_rank[2]}" 2>/dev/null || true
         set +e
         wait "$pid"
         code=$?

@@ -6,13 +6,17 @@ set -euo pipefail
 rockfall=$1 scenario=$2 work=$3
 rm -rf "$work" && mkdir -p "$work/alone"
 db="$work/read.db"
-"$rockfall" sweep "$scenario" --db "$db" --threads 1 --samples 120 --quiet >"$work/out.txt" 2>&1 &
+# The sweep stops itself (SIGSTOP, the hidden --pause-after) once one sample is stored, so
+# that the reader reads mid-run however fast the machine is; SIGCONT once it has read.
+"$rockfall" sweep "$scenario" --db "$db" --threads 1 --samples 120 --quiet --pause-after 1 \
+    >"$work/out.txt" 2>&1 &
 pid=$!
-for _ in $(seq 300); do
-    [ -f "$db" ] && break
+for _ in $(seq 1200); do
+    [ "$(awk '{print $3}' "/proc/$pid/stat" 2>/dev/null)" = T ] && break
     sleep 0.05
 done
-[ -f "$db" ] || { cat "$work/out.txt"; echo "the database never appeared"; exit 1; }
+[ "$(awk '{print $3}' "/proc/$pid/stat" 2>/dev/null)" = T ] ||
+    { cat "$work/out.txt"; echo "the sweep did not pause after one sample"; exit 1; }
 # The reader: an sqlite3 shell reading commands from a FIFO held open, so that it stays
 # connected (idle, as a shell or a pandas connection left open) until the FIFO closes.
 mkfifo "$work/commands"
@@ -20,6 +24,11 @@ sqlite3 "$db" <"$work/commands" >"$work/reader.txt" 2>&1 &
 reader=$!
 exec 3>"$work/commands"
 echo "SELECT status FROM run;" >&3
+for _ in $(seq 1200); do
+    [ -s "$work/reader.txt" ] && break
+    sleep 0.05
+done
+kill -CONT "$pid"
 set +e
 wait "$pid"
 code=$?
