@@ -9,10 +9,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <iterator>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace rockfall::app {
 namespace {
@@ -269,6 +271,35 @@ void add_calibration_curves(report::Plot& plot, const std::vector<FigureCurve>& 
         line.dash = "8 4";
         plot.series.push_back(line);
     }
+}
+
+CalibrationProgress::CalibrationProgress(const CalibrationFiles& files, std::int64_t runs,
+                                         int search_steps, std::size_t shapes, std::string unit)
+    : progress_(std::cerr, progress_mode_for_stderr(files.quiet || files.json),
+                runs * (1 + search_steps) * static_cast<std::int64_t>(shapes), std::move(unit)),
+      runs_(runs),
+      identifies_(search_steps > 0) {}
+
+risk::BatchProgress CalibrationProgress::callback() {
+    return [this](std::int64_t done, std::int64_t) {
+        last_ = done;
+        progress_.update(offset_ + done);
+    };
+}
+
+void CalibrationProgress::tested() {
+    offset_ += runs_;
+    last_ = 0;
+}
+
+void CalibrationProgress::identified() {
+    offset_ += last_;
+    last_ = 0;
+}
+
+void CalibrationProgress::finish() {
+    progress_.finish(offset_,
+                     identifies_ ? "(identification needed fewer steps than planned)" : "");
 }
 
 }  // namespace rockfall::app

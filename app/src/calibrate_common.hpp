@@ -2,6 +2,7 @@
 /// What the `rockfall calibrate` experiments share: the rocks a command line names, option
 /// checks, and the pieces of their outputs (distribution rows, JSON, figures, exact numbers).
 
+#include "progress.hpp"
 #include "report/svg_plot.hpp"
 #include "scenario/shape_source.hpp"
 
@@ -51,6 +52,31 @@ struct CalibrationFiles {
     std::optional<std::string> db;
     bool json = false;
     bool quiet = false;
+};
+
+/// The progress bar of a calibration over several shapes: each shape's test of `runs` runs, then,
+/// when the command identifies a parameter, an identification planned at `search_steps` tests of
+/// `runs` runs (curve points plus the search's largest number of refinements; 0: none). It
+/// usually stops earlier, so the bar ends at the runs done.
+class CalibrationProgress {
+  public:
+    CalibrationProgress(const CalibrationFiles& files, std::int64_t runs, int search_steps,
+                        std::size_t shapes, std::string unit);
+    /// The callback the tests and identifications report to.
+    risk::BatchProgress callback();
+    /// After a shape's test of `runs` runs.
+    void tested();
+    /// After a shape's identification.
+    void identified();
+    /// Ends the bar.
+    void finish();
+
+  private:
+    Progress progress_;
+    const std::int64_t runs_;
+    const bool identifies_;
+    std::int64_t offset_ = 0;
+    std::int64_t last_ = 0;
 };
 
 /// Help texts of a command's --svg, --csv and --fragment.

@@ -9,7 +9,6 @@
 #include "commands.hpp"
 #include "integer_option.hpp"
 #include "output_file.hpp"
-#include "progress.hpp"
 #include "scenario/scenario_file.hpp"
 #include "scenario/shape_source.hpp"
 #include "sweep_record.hpp"
@@ -95,18 +94,10 @@ void run(const DropArgs& args, const CLI::App& cmd) {
     options.curve_points = args.curve_points;
     options.threads = report.threads;
 
-    const std::int64_t per_rock =
-        args.count * (1 + (args.target_cor ? options.curve_points + options.max_iterations : 0));
-    Progress progress(std::cerr, progress_mode_for_stderr(args.files.quiet || args.files.json),
-                      per_rock * static_cast<std::int64_t>(rocks.size()), "drops");
-    // The plan counts every refinement step an identification may take; it usually stops
-    // earlier, so the bar ends at the drops actually run.
-    std::int64_t offset = 0;
-    std::int64_t last = 0;
-    const auto show = [&](std::int64_t done, std::int64_t) {
-        last = done;
-        progress.update(offset + done);
-    };
+    CalibrationProgress progress(
+        args.files, args.count,
+        args.target_cor ? options.curve_points + options.max_iterations : 0, rocks.size(), "drops");
+    const risk::BatchProgress show = progress.callback();
     const auto start = std::chrono::steady_clock::now();
     for (const CalibrationRock& rock : rocks) {
         DropShapeRun run;
@@ -119,17 +110,15 @@ void run(const DropArgs& args, const CLI::App& cmd) {
         run.spec.time_step = args.time_step;
         run.sphericity = rock.spec.geometry().sphericity;
         run.result = risk::run_drop_test(run.spec, report.threads, show);
-        offset += args.count;
+        progress.tested();
         if (args.target_cor) {
-            last = 0;
             run.identification =
                 risk::identify_surface_restitution(run.spec, *args.target_cor, options, show);
-            offset += last;
+            progress.identified();
         }
         report.shapes.push_back(std::move(run));
     }
-    progress.finish(offset,
-                    args.target_cor ? "(identification needed fewer steps than planned)" : "");
+    progress.finish();
     report.runtime =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

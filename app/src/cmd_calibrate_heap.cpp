@@ -6,7 +6,6 @@
 #include "calibration_record.hpp"
 #include "integer_option.hpp"
 #include "output_file.hpp"
-#include "progress.hpp"
 #include "sweep_record.hpp"
 #include "threads.hpp"
 
@@ -118,29 +117,21 @@ void run(HeapArgs args, const CLI::App& cmd) {
     }
 
     const std::int64_t count = args.spec.count;
-    const std::int64_t per_rock =
-        count * (1 + (args.target_angle ? options.curve_points + options.max_iterations : 0));
-    Progress progress(std::cerr, progress_mode_for_stderr(args.files.quiet || args.files.json),
-                      per_rock * static_cast<std::int64_t>(rocks.size()), "heaps");
-    std::int64_t offset = 0;
-    std::int64_t last = 0;
-    const auto show = [&](std::int64_t done, std::int64_t) {
-        last = done;
-        progress.update(offset + done);
-    };
+    CalibrationProgress progress(
+        args.files, count, args.target_angle ? options.curve_points + options.max_iterations : 0,
+        rocks.size(), "heaps");
+    const risk::BatchProgress show = progress.callback();
     const auto start = std::chrono::steady_clock::now();
     for (HeapShapeRun& run : report.shapes) {
         run.result = risk::run_heap_test(run.spec, report.threads, show);
-        offset += count;
+        progress.tested();
         if (args.target_angle) {
-            last = 0;
             run.identification =
                 risk::identify_friction(run.spec, *args.target_angle, options, show);
-            offset += last;
+            progress.identified();
         }
     }
-    progress.finish(offset,
-                    args.target_angle ? "(identification needed fewer steps than planned)" : "");
+    progress.finish();
     report.runtime =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
