@@ -95,8 +95,8 @@ void run(const DropArgs& args, const CLI::App& cmd) {
     options.threads = report.threads;
 
     CalibrationProgress progress(
-        args.files, args.count,
-        args.target_cor ? options.curve_points + options.max_iterations : 0, rocks.size(), "drops");
+        args.files, args.count, args.target_cor ? options.curve_points + options.max_iterations : 0,
+        rocks.size(), "drops");
     const risk::BatchProgress show = progress.callback();
     const auto start = std::chrono::steady_clock::now();
     for (const CalibrationRock& rock : rocks) {
