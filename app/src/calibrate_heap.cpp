@@ -134,8 +134,9 @@ void print_heap_text(std::ostream& out, const HeapReport& report) {
             out << "  warning: " << r.fills_not_at_rest << " fill"
                 << (r.fills_not_at_rest == 1 ? " was" : "s were") << " still moving after "
                 << short_number(h.max_fill_time)
-                << " s and lifted so: give it a longer --max-fill-time, or more --iterations "
-                   "(docs/calibration.md)\n";
+                << " s and lifted so: give it a longer --max-fill-time, or more --iterations; "
+                   "rocks wedged between walls a few rocks apart may never rest "
+                   "(docs/calibration.md, Deep fills)\n";
         }
         for (const risk::HeapMeasurement& m : r.heaps) {
             out << "    heap " << m.index << ": fill " << fmt("%.3f", m.fill_height) << " m, lift "
