@@ -392,9 +392,8 @@ int sweep_as_owner(SweepArgs& args, mpi::Session* session) {
             batch.clear();
             last_write = now;
             if (args.crash_after >= 0 && done >= args.crash_after) crash_mid_batch(results);
-            if (!session && args.pause_after >= 0 && before < args.pause_after &&
-                done >= args.pause_after)
-                std::raise(SIGSTOP);
+            // Ranks other than 0 pause in Session::serve.
+            if (!session) pause_after_samples(args.pause_after, before, done);
         }
         progress.update(done, note());
         if (interrupt_signal.load() != 0 || (monitor && monitor->stop_at())) runner.stop();
@@ -490,9 +489,8 @@ void register_sweep(CLI::App& app) {
         ->capture_default_str();
     // For the resume tests: crash in the middle of a batch once this many samples are stored.
     cmd->add_option("--crash-after", args->crash_after)->group("");
-    // For the signal tests: SIGSTOP to itself once this many samples are stored (one process)
-    // or sent to rank 0 (the other ranks of an MPI sweep), so that the test's signal, sent
-    // while it is stopped and delivered on SIGCONT, lands mid-run however fast the machine is.
+    // For the signal tests: pause (pause_after_samples) once this many samples are stored (one
+    // process) or sent to rank 0 (the other ranks of an MPI sweep).
     cmd->add_option("--pause-after", args->pause_after)->group("");
     // For the interrupt test: SIGINT to itself just before the database is created.
     cmd->add_flag("--interrupt-at-create", args->interrupt_at_create)->group("");

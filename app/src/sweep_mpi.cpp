@@ -5,7 +5,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <csignal>
 #include <mpi.h>
 #include <stdexcept>
 #include <string>
@@ -289,7 +288,7 @@ int Session::serve(const risk::SweepSpec& spec, const engine::Scenario& base,
             ++sent;
         }
         if (!bytes.empty()) send_bytes(bytes, owner, results);
-        if (pause_after_ >= 0 && before < pause_after_ && sent >= pause_after_) std::raise(SIGSTOP);
+        pause_after_samples(pause_after_, before, sent);
         if (no_more && !requested && runner.finished()) break;
     }
     check(MPI_Send(nullptr, 0, MPI_BYTE, owner, done, MPI_COMM_WORLD), "send");

@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
@@ -19,6 +20,14 @@
 #include <vector>
 
 namespace rockfall::app {
+
+/// For the signal tests (the hidden --pause-after): stops this process (SIGSTOP to itself) when
+/// a count of samples passes `pause_after` on going from `before` to `now`, so that the test's
+/// signal, sent while it is stopped and delivered on SIGCONT, lands mid-run however fast the
+/// machine is. Negative `pause_after`: never.
+inline void pause_after_samples(std::int64_t pause_after, std::int64_t before, std::int64_t now) {
+    if (pause_after >= 0 && before < pause_after && now >= pause_after) std::raise(SIGSTOP);
+}
 
 /// Where a sweep's finished samples come from: this process's threads, or every rank's.
 class SampleSource {
@@ -92,9 +101,8 @@ class Session {
     int serve(const risk::SweepSpec& spec, const engine::Scenario& base,
               const risk::RunnerOptions& options, const std::atomic<int>& interrupt);
 
-    /// For the signal tests (--pause-after): serve() stops this process (SIGSTOP to itself)
-    /// once it has sent `samples` samples, so that a test's signal lands mid-run however fast
-    /// the machine is; negative: never.
+    /// For the signal tests: serve() pauses once it has sent `samples` samples
+    /// (pause_after_samples); negative: never.
     void pause_after(std::int64_t samples) { pause_after_ = samples; }
 
     /// Whether rank 0 sent its setup and the other ranks have not all ended yet.

@@ -13,6 +13,8 @@ rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL: $*"; exit 1; }
 # shellcheck source=same_run.sh
 source "$(dirname "$0")/same_run.sh"
+# shellcheck source=paused.sh
+source "$(dirname "$0")/paused.sh"
 
 # extract MARKER FILE: the first ```sh block after the line "<!-- cluster.md: MARKER -->".
 extract() {
@@ -47,8 +49,6 @@ mkdir -p "$work/node2"
 (cd "$work" && exec env SLURM_ARRAY_TASK_ID=2 SLURM_TMPDIR=$work/node2 \
     ROCKFALL="$work/pausing_rockfall" bash "$work/sweep_array.sh") &
 pid=$!
-# state PID: the process's state letter (T: stopped), or nothing once it is gone.
-state() { awk '{print $3}' "/proc/$1/stat" 2>/dev/null || true; }
 # pending_term PID: whether SIGTERM (15) waits, undelivered, for the process (1 << 14 in ShdPnd).
 pending_term() {
     local mask
@@ -58,10 +58,10 @@ pending_term() {
 sweep=
 for _ in $(seq 1200); do
     sweep=$(pgrep -P "$pid" || true)
-    [ -n "$sweep" ] && [ "$(state "$sweep")" = T ] && break
+    [ -n "$sweep" ] && stopped "$sweep" && break
     sleep 0.05
 done
-[ -n "$sweep" ] && [ "$(state "$sweep")" = T ] || fail "task 2's sweep did not pause after 5 samples"
+[ -n "$sweep" ] && stopped "$sweep" || fail "task 2's sweep did not pause after 5 samples"
 kill -TERM "$pid"
 for _ in $(seq 1200); do
     pending_term "$sweep" && break

@@ -7,17 +7,15 @@
 set -euo pipefail
 rockfall=$1 scenario=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
+# shellcheck source=paused.sh
+source "$(dirname "$0")/paused.sh"
 db="$work/interrupted.db"
 # The sweep stops itself (SIGSTOP, the hidden --pause-after) once 5 samples are stored; the
 # SIGINT sent while it is stopped is taken on SIGCONT, mid-run however fast the machine is.
 "$rockfall" sweep "$scenario" --db "$db" --threads 1 --samples 600 --pause-after 5 \
     >"$work/out.txt" 2>&1 &
 pid=$!
-for _ in $(seq 1200); do
-    [ "$(awk '{print $3}' "/proc/$pid/stat" 2>/dev/null)" = T ] && break
-    sleep 0.05
-done
-if ! [ "$(awk '{print $3}' "/proc/$pid/stat" 2>/dev/null)" = T ]; then
+if ! wait_stopped "$pid"; then
     cat "$work/out.txt"
     echo "the sweep did not pause after 5 samples"; exit 1
 fi

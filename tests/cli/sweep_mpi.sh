@@ -14,6 +14,8 @@ rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL: $*"; exit 1; }
 # shellcheck source=same_run.sh
 source "$(dirname "$0")/same_run.sh"
+# shellcheck source=paused.sh
+source "$(dirname "$0")/paused.sh"
 mpi() { "$mpiexec" --allow-run-as-root --oversubscribe -np 3 "$@"; }
 "$rockfall" sweep "$scenario" --db "$work/one.db" --threads 2 --quiet "$@" >/dev/null
 
@@ -40,7 +42,7 @@ signals)
     # mpirun's exit code. Rank 0 cannot finish the run while the others hold unfinished
     # chunks, so the signal lands mid-run however fast the machine is.
     stop_rank() {
-        local signal=$1 rank=$2 name=$3 db=$work/$3.db pid p r state
+        local signal=$1 rank=$2 name=$3 db=$work/$3.db pid p r
         local -A by_rank=()
         shift 3
         # mpirun itself in the background (not the mpi function's subshell): its children
@@ -51,8 +53,7 @@ signals)
         for _ in $(seq 1200); do
             for p in $(pgrep -P "$pid"); do
                 r=$(tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | sed -n 's/^OMPI_COMM_WORLD_RANK=//p')
-                state=$(awk '{print $3}' "/proc/$p/stat" 2>/dev/null || true)
-                [ -n "$r" ] && [ "$state" = T ] && by_rank[$r]=$p
+                [ -n "$r" ] && stopped "$p" && by_rank[$r]=$p
             done
             [ -n "${by_rank[1]:-}" ] && [ -n "${by_rank[2]:-}" ] && break
             kill -0 "$pid" 2>/dev/null || break

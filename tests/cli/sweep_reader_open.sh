@@ -5,17 +5,15 @@
 set -euo pipefail
 rockfall=$1 scenario=$2 work=$3
 rm -rf "$work" && mkdir -p "$work/alone"
+# shellcheck source=paused.sh
+source "$(dirname "$0")/paused.sh"
 db="$work/read.db"
 # The sweep stops itself (SIGSTOP, the hidden --pause-after) once one sample is stored, so
 # that the reader reads mid-run however fast the machine is; SIGCONT once it has read.
 "$rockfall" sweep "$scenario" --db "$db" --threads 1 --samples 120 --quiet --pause-after 1 \
     >"$work/out.txt" 2>&1 &
 pid=$!
-for _ in $(seq 1200); do
-    [ "$(awk '{print $3}' "/proc/$pid/stat" 2>/dev/null)" = T ] && break
-    sleep 0.05
-done
-[ "$(awk '{print $3}' "/proc/$pid/stat" 2>/dev/null)" = T ] ||
+wait_stopped "$pid" ||
     { cat "$work/out.txt"; echo "the sweep did not pause after one sample"; exit 1; }
 # The reader: an sqlite3 shell reading commands from a FIFO held open, so that it stays
 # connected (idle, as a shell or a pandas connection left open) until the FIFO closes.
