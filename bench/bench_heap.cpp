@@ -41,6 +41,7 @@ struct Options {
     int parallel = 2;
     int threads = 2;
     int iterations = 10;
+    int lift_iterations = engine::HeapScenario{}.lift_solver_iterations;
     double contact_slop = engine::HeapScenario{}.contact_slop;
 };
 
@@ -64,6 +65,7 @@ risk::HeapTestSpec spec_of(const Options& o) {
     spec.heap.time_step = o.time_step;
     spec.heap.lift_time_step = o.lift_time_step;
     spec.heap.solver_iterations = o.iterations;
+    spec.heap.lift_solver_iterations = o.lift_iterations;
     spec.heap.contact_slop = o.contact_slop;
     spec.seed = o.seed;
     return spec;
@@ -98,6 +100,9 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--seed", o.seed, "Base seed")->capture_default_str();
     app.add_option("--iterations", o.iterations, "Solver iterations")->capture_default_str();
+    app.add_option("--lift-iterations", o.lift_iterations,
+                   "Solver iterations of the lift and the settling; 0: --iterations")
+        ->capture_default_str();
     app.add_option("--contact-slop", o.contact_slop, "Penetration left uncorrected, g dt^2")
         ->capture_default_str();
     app.add_option("--threads", o.threads,
@@ -115,7 +120,9 @@ int main(int argc, char** argv) {
                   << spec.heap.grading.d50 << " m, friction " << o.friction
                   << ", rolling resistance " << o.rolling_resistance << ", lift " << o.lift_speed
                   << " m/s, step " << o.time_step << " s (lift "
-                  << engine::effective_lift_step(spec.heap) << " s)\n";
+                  << engine::effective_lift_step(spec.heap) << " s), "
+                  << spec.heap.solver_iterations << " solver iterations (lift "
+                  << engine::effective_lift_iterations(spec.heap) << ")\n";
         const bench::Stopwatch one;
         const risk::HeapMeasurement m = risk::run_heap(spec, 0);
         const double wall = one.wall();

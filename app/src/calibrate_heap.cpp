@@ -127,7 +127,8 @@ void print_heap_text(std::ostream& out, const HeapReport& report) {
         out << "  " << r.heaps.size() << " heap" << (r.heaps.size() == 1 ? "" : "s")
             << " from seed " << run.spec.seed << ", time step " << short_number(h.time_step)
             << " s (lift " << short_number(engine::effective_lift_step(h)) << " s), "
-            << h.solver_iterations << " solver iterations, angle from " << run.spec.method.planes
+            << h.solver_iterations << " solver iterations (lift "
+            << engine::effective_lift_iterations(h) << "), angle from " << run.spec.method.planes
             << " planes through the axis; " << r.not_at_rest << " not at rest after "
             << short_number(h.max_settle_time) << " s\n";
         if (r.fills_not_at_rest > 0) {
@@ -183,6 +184,7 @@ nlohmann::json heap_json(const HeapReport& report) {
                                 {"time_step_s", h.time_step},
                                 {"lift_time_step_s", engine::effective_lift_step(h)},
                                 {"solver_iterations", h.solver_iterations},
+                                {"lift_solver_iterations", engine::effective_lift_iterations(h)},
                                 {"planes", run.spec.method.planes},
                                 {"result", result_json(run.result)}};
         if (run.identification) {

@@ -130,6 +130,7 @@ class HeapRun {
         }
         // Phase 2: the lift, until the rim clears every rock still inside its circle.
         const double dt = effective_lift_step(heap_);
+        world_.set_solver_iterations(effective_lift_iterations(heap_));
         while (true) {
             const double rise = heap_.funnel.lift_speed * (outcome_.lift_time + dt);
             world_.move_kinematic(funnel_, Vec3(outcome_.axis_x, 0.0, rim_z_ + rise));
@@ -258,6 +259,10 @@ const char* to_string(HeapStatus status) {
 
 double effective_lift_step(const HeapScenario& heap) {
     return heap.lift_time_step > 0.0 ? heap.lift_time_step : heap.time_step;
+}
+
+int effective_lift_iterations(const HeapScenario& heap) {
+    return heap.lift_solver_iterations > 0 ? heap.lift_solver_iterations : heap.solver_iterations;
 }
 
 bool lift_step_allowed(double lift_time_step) {

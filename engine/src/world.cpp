@@ -545,6 +545,10 @@ void World::shift_pose(int rock, const Vec3& shift, const Vec3& rotation) {
 
 void World::set_collision_threads(int threads) { impl_->dispatcher.set_threads(threads); }
 
+void World::set_solver_iterations(int iterations) {
+    impl_->world.getSolverInfo().m_numIterations = iterations;
+}
+
 void World::step(double dt) {
     // maxSubSteps = 0: exactly one step of dt, no fixed-step accumulator, no interpolation.
     impl_->world.stepSimulation(dt, 0);

@@ -94,6 +94,8 @@ class World {
     // Threads for a step's collision detection (>= 1; 1, the default: the caller's alone). The
     // results are bit-identical whatever the count (pair_dispatcher.hpp).
     void set_collision_threads(int threads);
+    // Solver iterations per step from the next step on, in [1, 100] (Numerics::solver_iterations).
+    void set_solver_iterations(int iterations);
     // One step of dt seconds (stepSimulation(dt, 0): no sub-steps, no interpolation).
     void step(double dt);
 

@@ -27,8 +27,8 @@ void require_count(const char* field, std::int64_t value, std::int64_t lower, st
                    const char* unit) {
     if (value >= lower && value <= upper) return;
     std::ostringstream message;
-    message << field << " = " << value << ' ' << unit << ": must be in [" << lower << ", " << upper
-            << ']';
+    message << field << " = " << value << (unit[0] != '\0' ? " " : "") << unit << ": must be in ["
+            << lower << ", " << upper << ']';
     throw std::invalid_argument(message.str());
 }
 
@@ -78,6 +78,7 @@ void check_heap_spec(const HeapTestSpec& spec) {
     detail::require_positive("max_fill_time", h.max_fill_time, "s");
     detail::require_positive("max_settle_time", h.max_settle_time, "s");
     require_count("solver_iterations", h.solver_iterations, 1, 100, "");
+    require_count("lift_solver_iterations", h.lift_solver_iterations, 0, 100, "");
     detail::require_range("contact_slop", h.contact_slop, "g dt^2", 0.0, 100.0, false, false);
     require_count("collision_threads", h.collision_threads, 1, 1024, "");
     detail::require_positive("gravity", h.gravity, "m/s2");

@@ -301,3 +301,20 @@ TEST_CASE("the lift and the heap's settling step with the lift time step", "[con
     CHECK(outcome.steps ==
           steps(outcome.fill_time, 1e-3) + steps(outcome.lift_time + outcome.settle_time, 2e-3));
 }
+
+TEST_CASE("the lift and the heap's settling use the lift's solver iterations", "[contact]") {
+    // The fill is the same (its own iterations); the lift then differs only by its iterations:
+    // 0 (the fill's 10) and 10 given explicitly run bit for bit alike, 40 makes another heap.
+    HeapScenario heap = small_heap(60);
+    heap.lift_time_step = 2e-3;
+    heap.lift_solver_iterations = 0;
+    const HeapOutcome plain = simulate_heap(heap, 3);
+    heap.lift_solver_iterations = heap.solver_iterations;
+    const HeapOutcome same = simulate_heap(heap, 3);
+    heap.lift_solver_iterations = 40;
+    const HeapOutcome more = simulate_heap(heap, 3);
+    CHECK(same.steps == plain.steps);
+    CHECK(same.final_states.back().position == plain.final_states.back().position);
+    CHECK(more.fill_time == plain.fill_time);
+    CHECK(more.final_states.back().position != plain.final_states.back().position);
+}

@@ -177,6 +177,10 @@ TEST_CASE("bad heap inputs name the field, value and range", "[heap]") {
         risk::check_heap_spec(spec),
         "lift_time_step = 0.02 s: must be 0 (the fill's time_step) or in [1e-05, 0.01]");
     spec = small_heap(shapes::RockKind::massive, 60);
+    spec.heap.lift_solver_iterations = 101;
+    CHECK_THROWS_WITH(risk::check_heap_spec(spec),
+                      "lift_solver_iterations = 101: must be in [0, 100]");
+    spec = small_heap(shapes::RockKind::massive, 60);
     risk::FrictionOptions options;
     CHECK_THROWS_WITH(risk::identify_friction(spec, 95.0, options),
                       "target_angle = 95 deg: must be in (0, 90)");

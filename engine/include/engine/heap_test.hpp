@@ -73,8 +73,9 @@ struct HeapScenario {
     double time_step = 1e-3;
     /// Time step of the lift and the heap's settling, s, in [1e-5, 1e-2]; 0: `time_step`. The
     /// fill is a fall of 0.2-0.4 m into the funnel at up to 3 m/s, the lift a slow flow of
-    /// rocks at centimetres per second, which a longer step resolves as well.
-    double lift_time_step = 0.0;
+    /// rocks at centimetres per second, which a longer step resolves as well given enough
+    /// solver iterations (`lift_solver_iterations`).
+    double lift_time_step = 2e-3;
     /// The rocks are at rest when their root mean square speed (mass-weighted, of the rocks on
     /// the surface) stays below this, m/s (> 0) ...
     double rest_speed = 0.01;
@@ -87,6 +88,12 @@ struct HeapScenario {
     double max_settle_time = 10.0;
     /// Solver iterations per step, in [1, 100].
     int solver_iterations = 10;
+    /// Solver iterations per step of the lift and the settling, in [0, 100]; 0:
+    /// `solver_iterations`. A pile creeps by what the iterations leave unsolved of each step's
+    /// load, so its creep per second grows with the step: a 2 ms lift with 40 gives the angle
+    /// of a 0.25-0.5 ms lift with 10, a 1 ms lift with 10 stands 2-4 deg flatter
+    /// (docs/calibration.md, *The mechanism: the solver's iterations per step*).
+    int lift_solver_iterations = 40;
     /// Penetration left uncorrected, in units of g dt^2, in [0, 100] (Numerics::contact_slop).
     double contact_slop = Numerics{}.contact_slop;
     /// Gravitational acceleration, m/s2 (> 0).
@@ -98,6 +105,9 @@ struct HeapScenario {
 
 /// The time step of the lift and the settling, s: `lift_time_step`, or `time_step` when 0.
 double effective_lift_step(const HeapScenario& heap);
+/// The solver iterations of the lift and the settling: `lift_solver_iterations`, or
+/// `solver_iterations` when 0.
+int effective_lift_iterations(const HeapScenario& heap);
 
 /// Whether a `lift_time_step` (s) is allowed: 0, or within `time_step`'s range [1e-5, 1e-2].
 bool lift_step_allowed(double lift_time_step);
