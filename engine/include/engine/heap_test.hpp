@@ -86,7 +86,7 @@ struct HeapScenario {
     double max_fill_time = 3.0;
     /// Longest simulated time of the heap's settling after the lift, s (> 0).
     double max_settle_time = 10.0;
-    /// Solver iterations per step, in [1, 100].
+    /// Solver iterations per step of the fill, in [1, 100].
     int solver_iterations = 10;
     /// Solver iterations per step of the lift and the settling, in [0, 100]; 0:
     /// `solver_iterations`. A pile creeps by what the iterations leave unsolved of each step's
