@@ -4,6 +4,7 @@
 
 #include <BulletCollision/CollisionDispatch/btActivatingCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
+#include <BulletCollision/CollisionDispatch/btSphereBoxCollisionAlgorithm.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
@@ -185,6 +186,37 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
     double gap_ = 0.0;
 };
 
+// Bullet's sphere-box query on an emptied manifold: one point per step (hull_contacts.hpp).
+class SphereBoxAlgorithm : public btSphereBoxCollisionAlgorithm {
+  public:
+    using btSphereBoxCollisionAlgorithm::btSphereBoxCollisionAlgorithm;
+
+    void processCollision(const btCollisionObjectWrapper* body0,
+                          const btCollisionObjectWrapper* body1, const btDispatcherInfo& info,
+                          btManifoldResult* result) override {
+        btPersistentManifold* manifold = own_manifold();
+        double impulse = 0.0;
+        if (manifold != nullptr) {
+            for (int i = 0; i < manifold->getNumContacts(); ++i) {
+                impulse += manifold->getContactPoint(i).m_appliedImpulse;
+            }
+            manifold->clearManifold();
+        }
+        btSphereBoxCollisionAlgorithm::processCollision(body0, body1, info, result);
+        manifold = own_manifold();
+        if (manifold != nullptr && manifold->getNumContacts() > 0) {
+            manifold->getContactPoint(0).m_appliedImpulse = impulse;
+        }
+    }
+
+  private:
+    btPersistentManifold* own_manifold() {
+        btManifoldArray manifolds;
+        getAllContactManifolds(manifolds);
+        return manifolds.size() == 1 ? manifolds[0] : nullptr;
+    }
+};
+
 }  // namespace
 
 HullContactCreateFunc::HullContactCreateFunc()
@@ -200,5 +232,14 @@ btCollisionAlgorithm* HullContactCreateFunc::CreateCollisionAlgorithm(
 }
 
 int hull_contact_algorithm_size() { return static_cast<int>(sizeof(HullContactAlgorithm)); }
+
+btCollisionAlgorithm* SphereBoxCreateFunc::CreateCollisionAlgorithm(
+    btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,
+    const btCollisionObjectWrapper* body1) {
+    void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sphere_box_algorithm_size());
+    return new (memory) SphereBoxAlgorithm(nullptr, info, body0, body1, m_swapped);
+}
+
+int sphere_box_algorithm_size() { return static_cast<int>(sizeof(SphereBoxAlgorithm)); }
 
 }  // namespace rockfall::engine

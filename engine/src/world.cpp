@@ -118,6 +118,8 @@ std::size_t expected_rocks(const Scenario& scenario) {
 struct World::Impl {
     btDefaultCollisionConfiguration configuration;
     HullContactCreateFunc hull_contacts;
+    SphereBoxCreateFunc sphere_box_contacts;
+    SphereBoxCreateFunc swapped_sphere_box_contacts;
     TerrainContactCreateFunc terrain_contacts;
     TerrainContactCreateFunc swapped_terrain_contacts;
     SheetContactCreateFunc sheet_contacts;
@@ -170,6 +172,11 @@ struct World::Impl {
               std::pair{CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE}}) {
             dispatcher.registerCollisionCreateFunc(a, b, &hull_contacts);
         }
+        swapped_sphere_box_contacts.m_swapped = true;
+        dispatcher.registerCollisionCreateFunc(SPHERE_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE,
+                                               &sphere_box_contacts);
+        dispatcher.registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, SPHERE_SHAPE_PROXYTYPE,
+                                               &swapped_sphere_box_contacts);
         swapped_terrain_contacts.m_swapped = true;
         dispatcher.registerCollisionCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE,
                                                TRIANGLE_MESH_SHAPE_PROXYTYPE, &terrain_contacts);
@@ -205,7 +212,7 @@ struct World::Impl {
         info.m_defaultMaxCollisionAlgorithmPoolSize = pool;
         info.m_customCollisionAlgorithmMaxElementSize =
             std::max({hull_contact_algorithm_size(), sheet_contact_algorithm_size(),
-                      terrain_contact_algorithm_size()});
+                      terrain_contact_algorithm_size(), sphere_box_algorithm_size()});
         return info;
     }
 
