@@ -93,6 +93,8 @@ class Run {
 
     const Scenario& scenario_;
     const shapes::Slope slope_;
+    // The angle bars, when the step is refined near them (numerics.bar_refinement > 1).
+    std::vector<shapes::OrientedBox> bars_;
     World world_;
     std::vector<RockRun> rocks_;
     Outcome outcome_;
@@ -114,6 +116,11 @@ Run::Run(const Scenario& scenario, std::uint64_t seed, const RunOptions& options
     assert(options.trajectory_interval > 0.0);
     assert(options.collision_threads >= 1);
     world_.set_collision_threads(options.collision_threads);
+    if (scenario.numerics.bar_refinement > 1) {
+        for (const shapes::OrientedBox& box : slope_.solids()) {
+            if (box.role == shapes::SurfaceRole::bar) bars_.push_back(box);
+        }
+    }
     Random random(seed);
     std::vector<PlacedRock> placed;
     for (const RockRelease& spec : scenario.rocks) {
@@ -284,14 +291,21 @@ void Run::make_rigid(RockRun& rock) {
 
 // Phase 2: the coarse step, or the shortest step a rock near the wall needs: the contact's fine
 // step while an impact lasts, shrinking approach steps before. Resting contacts, and rocks
-// too slow to make an impact, take the coarse step.
+// too slow to make an impact, take the coarse step. With numerics.bar_refinement, the coarse
+// step is divided while a moving rock may reach an angle bar within two coarse steps.
 StepChoice Run::step_size() const {
     const double coarse = scenario_.numerics.time_step;
+    double dt = coarse;
+    if (!bars_.empty() && std::any_of(rocks_.begin(), rocks_.end(), [&](const RockRun& rock) {
+            return rock.phase == Phase::moving &&
+                   may_reach(bars_, rock.geometry, rock.body_state, coarse);
+        })) {
+        dt = coarse / scenario_.numerics.bar_refinement;
+    }
     if (scenario_.numerics.wall_stepping == WallStepping::per_rock) {
-        return {coarse, false};
+        return {dt, dt < coarse};
     }
     const int steps_per_contact = scenario_.wall_contact.steps_per_contact;
-    double dt = coarse;
     for (const RockRun& rock : rocks_) {
         if (rock.phase == Phase::gone || !rock.law || rock.rigid_wall) {
             continue;

@@ -63,4 +63,16 @@ double approach_step(const WallContactLaw& law, const WallApproach& approach, in
                     fine_step(law, approach.approach_speed, steps_per_contact, coarse_dt));
 }
 
+bool may_reach(const std::vector<shapes::OrientedBox>& boxes, const shapes::RockGeometry& rock,
+               const BodyState& state, double coarse_dt) {
+    const bool sphere = rock.radius > 0.0;
+    const double speed = state.velocity.norm() +
+                         (sphere ? 0.0 : state.angular_velocity.norm() * rock.bounding_radius);
+    if (speed < WallContactLaw::kMinContactSpeed) return false;
+    const double reach = rock.bounding_radius + 2.0 * speed * coarse_dt + kReserve;
+    return std::any_of(boxes.begin(), boxes.end(), [&](const shapes::OrientedBox& box) {
+        return shapes::signed_distance(box, state.position) < reach;
+    });
+}
+
 }  // namespace rockfall::engine

@@ -7,6 +7,8 @@
 
 #include "engine/wall_contact.hpp"
 
+#include <vector>
+
 namespace rockfall::engine {
 
 // A rock's distance and speed relative to the wall before a step.
@@ -38,5 +40,12 @@ double fine_step(const WallContactLaw& law, double approach_speed, int steps_per
 // geometrically, so the first touch happens within a fine step.
 double approach_step(const WallContactLaw& law, const WallApproach& approach, int steps_per_contact,
                      double coarse_dt);
+
+// Whether a rock in `state` may reach one of `boxes` within two coarse steps (coarse_dt, s):
+// the gap from its bounding sphere to the box below twice the distance it can travel in a
+// coarse step (|v|, plus |w| times the bounding radius for hulls). Rocks slower than the wall
+// law's kMinContactSpeed make no impact and never count (a rock resting on a bar).
+bool may_reach(const std::vector<shapes::OrientedBox>& boxes, const shapes::RockGeometry& rock,
+               const BodyState& state, double coarse_dt);
 
 }  // namespace rockfall::engine

@@ -130,7 +130,7 @@ inline const Fields<engine::Release, 7> release_fields{{
     {"random_orientation", &engine::Release::random_orientation, "", {}},
 }};
 
-inline const Fields<engine::Numerics, 7> numerics_fields{{
+inline const Fields<engine::Numerics, 8> numerics_fields{{
     {"time_step", &engine::Numerics::time_step, "s", closed(1e-5, 1e-2)},
     {"max_time", &engine::Numerics::max_time, "s", positive()},
     {"rest_speed", &engine::Numerics::rest_speed, "m/s", positive()},
@@ -138,6 +138,7 @@ inline const Fields<engine::Numerics, 7> numerics_fields{{
     {"restitution_threshold", &engine::Numerics::restitution_threshold, "m/s", closed(0.001, 1.0)},
     {"solver_iterations", &engine::Numerics::solver_iterations, "", closed(1, 100)},
     {"contact_slop", &engine::Numerics::contact_slop, "g dt^2", closed(0.0, 100.0)},
+    {"bar_refinement", &engine::Numerics::bar_refinement, "", closed(1, 64)},
 }};
 
 inline const Fields<engine::Scenario, 1> scenario_fields{{

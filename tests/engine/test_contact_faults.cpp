@@ -92,6 +92,54 @@ TEST_CASE("a frictionless sphere landing while it moves along the surface keeps 
 
 namespace {
 
+// Mechanical energy of a sphere of diameter `size` (m, density 2600 kg/m3), J: kinetic plus
+// m g z.
+double sphere_energy(const RockState& state, double size) {
+    const double mass = 2600.0 * std::numbers::pi / 6.0 * size * size * size;
+    const double inertia = 0.4 * mass * 0.25 * size * size;
+    return 0.5 * mass * state.velocity.squaredNorm() +
+           0.5 * inertia * state.angular_velocity.squaredNorm() +
+           mass * kGravity * state.position.z();
+}
+
+}  // namespace
+
+TEST_CASE("refining the step near the angle bars gives a bar crossing the fine step's energy",
+          "[verification][contact]") {
+    // The seed slope's 0.365 m sphere lands 12 cm above the fourth bar and strikes its edge 6 ms
+    // later. A 1 ms step takes both impacts in one step (the edge's then approached at the fall
+    // speed as well) and lost 0.25 of the sphere's energy at that bar against 0.13 at 0.5 ms and
+    // finer (docs/sweeps.md, "Step size").
+    const auto run = [](double dt, int refinement) {
+        engine::Scenario scenario =
+            plane_scenario(0.0, shapes::RockKind::sphere, {0.6, 0.3, 0.02}, dt);
+        scenario.slope.segments = {{5.0, 43.0}, {5.7, 29.0}, {7.5, 0.0}};
+        scenario.slope.bars.enabled = true;
+        scenario.materials.bars = {0.4, 0.3, 0.02};
+        scenario.rocks.front().rock.size = 0.365;
+        scenario.rocks.front().release.distance = 0.5;
+        scenario.numerics.max_time = 1.6;
+        scenario.numerics.bar_refinement = refinement;
+        const std::vector<RockState> states = trajectory(scenario, 1e-6);
+        // Before the fourth bar (1.35 s: in flight towards it) and after it (1.55 s: in flight).
+        return std::pair{sphere_energy(engine::scenes::state_at(states, 1.35), 0.365),
+                         sphere_energy(engine::scenes::state_at(states, 1.55), 0.365)};
+    };
+    const auto [fine_before, fine_after] = run(2.5e-4, 1);
+    const auto [coarse_before, coarse_after] = run(1e-3, 1);
+    const auto [refined_before, refined_after] = run(1e-3, 4);
+    const double fine = fine_after / fine_before;
+    const double coarse = coarse_after / coarse_before;
+    const double refined = refined_after / refined_before;
+    INFO("energy kept across the bar: 0.25 ms "
+         << fine << ", 1 ms " << coarse << ", 1 ms refined 4 times near the bars " << refined);
+    // The case shows the fault (the coarse step loses far more) and the refinement removes it.
+    CHECK(coarse < fine - 0.05);
+    CHECK_THAT(refined, WithinAbs(fine, 0.005));
+}
+
+namespace {
+
 // The scenario's default restitution threshold, m/s (numerics.restitution_threshold).
 const double kRestitutionThreshold = engine::Numerics{}.restitution_threshold;
 

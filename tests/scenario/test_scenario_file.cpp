@@ -186,6 +186,7 @@ TEST_CASE("format_scenario reads back to an identical scenario", "[scenario][sce
     s.numerics.time_step = 1e-5;
     s.numerics.restitution_threshold = 0.125;
     s.numerics.contact_slop = 0.5;
+    s.numerics.bar_refinement = 4;
     const rockfall::engine::Scenario back = rockfall::scenario::parse_scenario(
         rockfall::scenario::format_scenario(s), "formatted.toml");
     CHECK(back.name == s.name);
@@ -201,6 +202,7 @@ TEST_CASE("format_scenario reads back to an identical scenario", "[scenario][sce
     CHECK(back.numerics.time_step == 1e-5);
     CHECK(back.numerics.restitution_threshold == 0.125);
     CHECK(back.numerics.contact_slop == 0.5);
+    CHECK(back.numerics.bar_refinement == 4);
     CHECK(rockfall::scenario::format_scenario(back) == rockfall::scenario::format_scenario(s));
 }
 
@@ -319,6 +321,7 @@ TEST_CASE("every problem in a file is reported at once, in line order",
         {"rocks[0].density", "density = -2500"},
         {"numerics.time_step", "time_step = 0.5"},
         {"numerics.contact_slop", "contact_slop = -1.0"},
+        {"numerics.bar_refinement", "bar_refinement = 0"},
     };
     REQUIRE(error.problems().size() == expected.size());
     const std::string what = error.what();
@@ -335,6 +338,8 @@ TEST_CASE("every problem in a file is reported at once, in line order",
     check_line(error, "gravity", "-9.81 m/s2: must be > 0", file, "gravity = -9.81");
     check_line(error, "numerics.contact_slop", "-1 g dt^2: must be in [0, 100]", file,
                "contact_slop = -1.0");
+    check_line(error, "numerics.bar_refinement", "0: must be in [1, 64]", file,
+               "bar_refinement = 0");
 }
 
 TEST_CASE("a missing file is one clear problem", "[scenario][scenario][errors]") {

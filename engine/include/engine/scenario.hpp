@@ -177,6 +177,10 @@ struct Numerics {
     /// dropped every other one (docs/contact_model.md, "Resting contacts"). 0: every penetration
     /// is corrected (Bullet's behaviour).
     double contact_slop = 2.0;
+    /// Steps per coarse step while a rock is within two coarse steps' travel of an angle bar,
+    /// in [1, 64] (1: none). A coarse step lets a rock land beside a bar and strike its edge in
+    /// one step, two impacts milliseconds apart solved as one (docs/sweeps.md, "Step size").
+    int bar_refinement = 1;
     /// Stepping of wall impacts.
     WallStepping wall_stepping = WallStepping::per_rock;
     /// Contact detection against a perforated sheet.
