@@ -189,32 +189,34 @@ class HullContactAlgorithm : public btActivatingCollisionAlgorithm {
 // Bullet's sphere-box query on an emptied manifold: one point per step (hull_contacts.hpp).
 class SphereBoxAlgorithm : public btSphereBoxCollisionAlgorithm {
   public:
-    using btSphereBoxCollisionAlgorithm::btSphereBoxCollisionAlgorithm;
+    SphereBoxAlgorithm(const btCollisionAlgorithmConstructionInfo& info,
+                       const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                       bool swapped)
+        : btSphereBoxCollisionAlgorithm(nullptr, info, body0, body1, swapped) {
+        // Bullet's algorithm makes its manifold here, once, or none when the pair needs no
+        // collision; it never replaces it.
+        btManifoldArray manifolds;
+        getAllContactManifolds(manifolds);
+        manifold_ = manifolds.size() == 1 ? manifolds[0] : nullptr;
+    }
 
     void processCollision(const btCollisionObjectWrapper* body0,
                           const btCollisionObjectWrapper* body1, const btDispatcherInfo& info,
                           btManifoldResult* result) override {
-        btPersistentManifold* manifold = own_manifold();
+        if (manifold_ == nullptr) return;
         double impulse = 0.0;
-        if (manifold != nullptr) {
-            for (int i = 0; i < manifold->getNumContacts(); ++i) {
-                impulse += manifold->getContactPoint(i).m_appliedImpulse;
-            }
-            manifold->clearManifold();
+        for (int i = 0; i < manifold_->getNumContacts(); ++i) {
+            impulse += manifold_->getContactPoint(i).m_appliedImpulse;
         }
+        manifold_->clearManifold();
         btSphereBoxCollisionAlgorithm::processCollision(body0, body1, info, result);
-        manifold = own_manifold();
-        if (manifold != nullptr && manifold->getNumContacts() > 0) {
-            manifold->getContactPoint(0).m_appliedImpulse = impulse;
+        if (manifold_->getNumContacts() > 0) {
+            manifold_->getContactPoint(0).m_appliedImpulse = impulse;
         }
     }
 
   private:
-    btPersistentManifold* own_manifold() {
-        btManifoldArray manifolds;
-        getAllContactManifolds(manifolds);
-        return manifolds.size() == 1 ? manifolds[0] : nullptr;
-    }
+    btPersistentManifold* manifold_ = nullptr;
 };
 
 }  // namespace
@@ -237,7 +239,7 @@ btCollisionAlgorithm* SphereBoxCreateFunc::CreateCollisionAlgorithm(
     btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,
     const btCollisionObjectWrapper* body1) {
     void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sphere_box_algorithm_size());
-    return new (memory) SphereBoxAlgorithm(nullptr, info, body0, body1, m_swapped);
+    return new (memory) SphereBoxAlgorithm(info, body0, body1, m_swapped);
 }
 
 int sphere_box_algorithm_size() { return static_cast<int>(sizeof(SphereBoxAlgorithm)); }
