@@ -69,9 +69,16 @@ bool may_reach(const std::vector<shapes::OrientedBox>& boxes, const shapes::Rock
     const double speed = state.velocity.norm() +
                          (sphere ? 0.0 : state.angular_velocity.norm() * rock.bounding_radius);
     if (speed < WallContactLaw::kMinContactSpeed) return false;
-    const double reach = rock.bounding_radius + 2.0 * speed * coarse_dt + kReserve;
+    const double travel = 2.0 * speed * coarse_dt + kReserve;
     return std::any_of(boxes.begin(), boxes.end(), [&](const shapes::OrientedBox& box) {
-        return shapes::signed_distance(box, state.position) < reach;
+        Vec3 normal = Vec3::Zero();
+        const double centre_distance = shapes::signed_distance(box, state.position, &normal);
+        if (centre_distance - rock.bounding_radius >= travel) return false;
+        if (sphere) return true;
+        // A hull's bounding sphere reaches a bar long before the hull does (a slab's by up to
+        // its half length): the separation along the normal at the box's closest point bounds
+        // the gap from below, as for the wall (wall_approach).
+        return centre_distance - extent_along(rock, state.orientation, -normal) < travel;
     });
 }
 

@@ -42,9 +42,11 @@ double approach_step(const WallContactLaw& law, const WallApproach& approach, in
                      double coarse_dt);
 
 // Whether a rock in `state` may reach one of `boxes` within two coarse steps (coarse_dt, s):
-// the gap from its bounding sphere to the box below twice the distance it can travel in a
-// coarse step (|v|, plus |w| times the bounding radius for hulls). Rocks slower than the wall
-// law's kMinContactSpeed make no impact and never count (a rock resting on a bar).
+// the gap to the box below twice the distance it can travel in a coarse step (|v|, plus |w|
+// times the bounding radius for hulls). The gap is the sphere's, and for a hull a lower bound:
+// its separation from the plane through the box's point closest to its centre. Rocks slower
+// than the wall law's kMinContactSpeed make no impact and never count (a rock resting on a
+// bar).
 bool may_reach(const std::vector<shapes::OrientedBox>& boxes, const shapes::RockGeometry& rock,
                const BodyState& state, double coarse_dt);
 
