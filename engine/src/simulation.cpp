@@ -292,13 +292,14 @@ void Run::make_rigid(RockRun& rock) {
 // Phase 2: the coarse step, or the shortest step a rock near the wall needs: the contact's fine
 // step while an impact lasts, shrinking approach steps before. Resting contacts, and rocks
 // too slow to make an impact, take the coarse step. With numerics.bar_refinement, the coarse
-// step is divided while a moving rock may reach an angle bar within two coarse steps.
+// step is divided while a rock approaching an angle bar at 1 m/s or more may reach it within
+// two coarse steps (may_reach).
 StepChoice Run::step_size() const {
     const double coarse = scenario_.numerics.time_step;
     double dt = coarse;
     if (!bars_.empty() && std::any_of(rocks_.begin(), rocks_.end(), [&](const RockRun& rock) {
             return rock.phase == Phase::moving &&
-                   may_reach(bars_, rock.geometry, rock.body_state, coarse);
+                   may_reach(bars_, rock.geometry, rock.body_state, coarse, scenario_.gravity);
         })) {
         dt = coarse / scenario_.numerics.bar_refinement;
     }

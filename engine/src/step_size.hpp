@@ -41,13 +41,14 @@ double fine_step(const WallContactLaw& law, double approach_speed, int steps_per
 double approach_step(const WallContactLaw& law, const WallApproach& approach, int steps_per_contact,
                      double coarse_dt);
 
-// Whether a rock in `state` may reach one of `boxes` within two coarse steps (coarse_dt, s):
-// the gap to the box below twice the distance it can travel in a coarse step (|v|, plus |w|
-// times the bounding radius for hulls). The gap is the sphere's, and for a hull a lower bound:
-// its separation from the plane through the box's point closest to its centre. Rocks slower
-// than the wall law's kMinContactSpeed make no impact and never count (a rock resting on a
-// bar).
+// Whether a rock in `state` may reach one of `boxes` within two coarse steps (coarse_dt, s,
+// under `gravity`, m/s2): its gap to a box below the distance it can close in that time, at
+// the rate at which its centre approaches the box (-n.v, n the box's outward normal at the
+// point closest to the centre; 0 when it moves away), plus |w| times the bounding radius for
+// hulls, plus what gravity adds. The gap is the sphere's, and for a hull a lower bound: its
+// separation from the plane through that point. Rocks slower than the wall law's
+// kMinContactSpeed make no impact and never count (a rock resting on a bar).
 bool may_reach(const std::vector<shapes::OrientedBox>& boxes, const shapes::RockGeometry& rock,
-               const BodyState& state, double coarse_dt);
+               const BodyState& state, double coarse_dt, double gravity);
 
 }  // namespace rockfall::engine

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
@@ -272,4 +273,49 @@ TEST_CASE("frictionless spheres in a cluster keep zero spin against spheres, blo
     REQUIRE(samples > 100);
     CHECK(fastest > 2.0);  // the cluster did run down the flume
     CHECK(largest < 1e-9);
+}
+
+TEST_CASE("the step is refined only while a rock approaches an angle bar at 1 m/s or more",
+          "[verification][contact]") {
+    // A rock slides without friction along a horizontal plane into the bar 0.5 m ahead (bars
+    // every metre). Refined steps come only within two coarse steps of the bar while the rock
+    // nears it at 1 m/s or more: none for a slow approach, a handful for a fast sphere that
+    // bounces back; and none for a block until two coarse steps before it touches (its gap is
+    // its own, not its bounding sphere's, which reaches the bar about 10 ms earlier at 3 m/s).
+    const auto scenario_of = [](shapes::RockKind kind, double speed) {
+        engine::Scenario scenario = plane_scenario(0.0, kind, {0.0, 0.3, 0.0}, 1e-3);
+        scenario.slope.bars.enabled = true;
+        scenario.slope.bars.segments = {0};
+        engine::RockRelease& rock = scenario.rocks.front();
+        rock.rock.size = 0.16;
+        rock.release.distance = 5.5;
+        rock.release.velocity = Vec3(speed, 0.0, 0.0);
+        scenario.numerics.max_time = 0.6;
+        scenario.numerics.bar_refinement = 4;
+        return scenario;
+    };
+    for (const shapes::RockKind kind : {shapes::RockKind::sphere, shapes::RockKind::massive}) {
+        INFO((kind == shapes::RockKind::sphere ? "sphere" : "block"));
+        const engine::Outcome slow = engine::simulate(scenario_of(kind, 0.9), 1);
+        CHECK(slow.rocks.front().final_state.velocity.x() < 0.0);  // it reached the bar
+        CHECK(slow.fine_steps == 0);
+    }
+    const engine::Outcome sphere = engine::simulate(scenario_of(shapes::RockKind::sphere, 3.0), 1);
+    INFO("sphere at 3 m/s: " << sphere.fine_steps << " refined steps");
+    CHECK(sphere.rocks.front().final_state.velocity.x() < 0.0);
+    CHECK(sphere.fine_steps > 0);
+    CHECK(sphere.fine_steps <= 4 * 6);
+    // The block's first touch: where the bar first slows it.
+    engine::Scenario block = scenario_of(shapes::RockKind::massive, 3.0);
+    const std::vector<RockState> states = trajectory(block, 1e-4);
+    const auto touch = std::find_if(states.begin(), states.end(),
+                                    [](const RockState& s) { return s.velocity.x() < 2.99; });
+    REQUIRE(touch != states.end());
+    block.numerics.max_time = touch->time - 0.005;
+    const engine::Outcome before = engine::simulate(block, 1);
+    INFO("block: touches at " << touch->time << " s, " << before.fine_steps
+                              << " refined steps until 5 ms before");
+    CHECK(before.fine_steps == 0);
+    block.numerics.max_time = touch->time + 0.001;
+    CHECK(engine::simulate(block, 1).fine_steps > 0);
 }

@@ -85,7 +85,7 @@ TEST_CASE("seed 000 Fig. 5 without bars: small Cr goes with a more negative V'",
 }
 
 // A documented miss (docs/validation.md, "Seed 000: motion on the slope"): the simulated slope of w
-// on v at the toe is less than half as large with bars as without (3.83 against 8.02 rad/m over
+// on v at the toe is less than half as large with bars as without (3.46 against 8.02 rad/m over
 // all shapes, 2026-12-07), where the paper finds it larger with bars. Without bars the spheres roll
 // without slipping and reach the toe at nearly one speed with w = v / r, so the spheres' spread of
 // sizes makes the steep part of the line; the blocks and slabs slide slowly. [!mayfail] keeps the

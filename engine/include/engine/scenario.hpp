@@ -177,10 +177,11 @@ struct Numerics {
     /// dropped every other one (docs/contact_model.md, "Resting contacts"). 0: every penetration
     /// is corrected (Bullet's behaviour).
     double contact_slop = 2.0;
-    /// Steps per coarse step while a rock is within two coarse steps' travel of an angle bar,
-    /// in [1, 64] (1: none). A coarse step lets a rock land beside a bar and strike its edge in
-    /// one step, two impacts milliseconds apart solved as one (docs/sweeps.md, "Step size");
-    /// 4 reads the sweep tails of a 0.25 ms step at 1.1 (spheres) to 1.4 (hulls) times the cost.
+    /// Steps per coarse step while a rock approaching an angle bar at 1 m/s or more is within
+    /// two coarse steps' travel of it, in [1, 64] (1: none). A coarse step lets a rock land
+    /// beside a bar and strike its edge in one step, two impacts milliseconds apart solved as
+    /// one (docs/sweeps.md, "Step size"); 4 reads the sweep tails of a 0.25 ms step at 1.1 to
+    /// 1.25 times the cost of 1 ms.
     int bar_refinement = 4;
     /// Stepping of wall impacts.
     WallStepping wall_stepping = WallStepping::per_rock;
