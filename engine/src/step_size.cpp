@@ -71,7 +71,8 @@ bool may_reach(const std::vector<shapes::OrientedBox>& boxes, const shapes::Rock
                const BodyState& state, double coarse_dt, double gravity) {
     const bool sphere = rock.radius > 0.0;
     const double spin_reach = sphere ? 0.0 : state.angular_velocity.norm() * rock.bounding_radius;
-    if (state.velocity.norm() + spin_reach < WallContactLaw::kMinContactSpeed) return false;
+    // The approach speed below is at most this.
+    if (state.velocity.norm() + spin_reach < kMinBarApproach) return false;
     const double horizon = 2.0 * coarse_dt;
     return std::any_of(boxes.begin(), boxes.end(), [&](const shapes::OrientedBox& box) {
         Vec3 normal = Vec3::Zero();

@@ -46,8 +46,8 @@ double approach_step(const WallContactLaw& law, const WallApproach& approach, in
 // the rate at which its centre approaches the box (-n.v, n the box's outward normal at the
 // point closest to the centre; 0 when it moves away), plus |w| times the bounding radius for
 // hulls, plus what gravity adds. The gap is the sphere's, and for a hull a lower bound: its
-// separation from the plane through that point. Rocks slower than the wall law's
-// kMinContactSpeed make no impact and never count (a rock resting on a bar).
+// separation from the plane through that point. Approaches slower than 1 m/s never count: the
+// rock moves under a millimetre per 1 ms step (a rock resting on or creeping over a bar).
 bool may_reach(const std::vector<shapes::OrientedBox>& boxes, const shapes::RockGeometry& rock,
                const BodyState& state, double coarse_dt, double gravity);
 
