@@ -4,6 +4,7 @@
 #include "friction_patch.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <numbers>
 
@@ -68,6 +69,13 @@ inline btScalar solve_row(btSolverBody& a, btSolverBody& b, btSolverConstraint& 
     return delta * (btScalar(1.) / row.m_jacDiagABInv);
 }
 
+// The body's share of an angular-only row's impulse, as internalApplyImpulse adds it (its
+// linear share is zero).
+inline void apply_angular(btSolverBody& body, const btVector3& angular, btScalar delta) {
+    if (body.m_originalBody)
+        body.m_deltaAngularVelocity += angular * (delta * body.m_angularFactor);
+}
+
 }  // namespace
 
 void CoulombSolver::convertContacts(btPersistentManifold** manifolds, int manifold_count,
@@ -88,7 +96,31 @@ void CoulombSolver::convertContacts(btPersistentManifold** manifolds, int manifo
     // over them (bounded by min(mu_r r N, mu_r r), then solved again by ours) is hidden the
     // same way.
     rolling_rows_ = m_tmpSolverContactRollingFrictionConstraintPool.size();
+    copy_rolling_rows();
     m_tmpSolverContactRollingFrictionConstraintPool.resizeNoInitialize(0);
+}
+
+void CoulombSolver::copy_rolling_rows() {
+    const btConstraintArray& rows = m_tmpSolverContactRollingFrictionConstraintPool;
+    rolling_.resize(static_cast<std::size_t>(rows.size()));
+    for (int i = 0; i < rows.size(); ++i) {
+        const btSolverConstraint& row = rows[i];
+        assert(row.m_contactNormal1.isZero() && row.m_contactNormal2.isZero());
+        RollingRow& copy = rolling_[static_cast<std::size_t>(i)];
+        copy.axis_a = row.m_relpos1CrossNormal;
+        copy.axis_b = row.m_relpos2CrossNormal;
+        copy.angular_a = row.m_angularComponentA;
+        copy.angular_b = row.m_angularComponentB;
+        copy.rhs = row.m_rhs;
+        copy.cfm = row.m_cfm;
+        copy.jac_inv = row.m_jacDiagABInv;
+        copy.applied = row.m_appliedImpulse;
+        copy.length = row.m_friction;
+        copy.body_a = row.m_solverBodyIdA;
+        copy.body_b = row.m_solverBodyIdB;
+        // m_frictionIndex of a rolling row is the index of its point's normal row.
+        copy.normal_row = row.m_frictionIndex;
+    }
 }
 
 void CoulombSolver::aim_restitution_at_touch(const btContactSolverInfo& info) {
@@ -167,29 +199,38 @@ btScalar CoulombSolver::solveSingleIteration(int iteration, btCollisionObject** 
 
 btScalar CoulombSolver::bound_rolling_resistance() {
     btScalar residual = 0.0;
-    btConstraintArray& rows = m_tmpSolverContactRollingFrictionConstraintPool;
-    rows.resizeNoInitialize(rolling_rows_);
-    for (int i = 0; i < rows.size(); ++i) {
-        btSolverConstraint& row = rows[i];
-        // m_frictionIndex of a rolling row is the index of its point's normal row.
-        const btScalar normal =
-            m_tmpSolverContactConstraintPool[row.m_frictionIndex].m_appliedImpulse;
-        if (normal <= 0.0 && row.m_appliedImpulse == 0.0) {
+    for (RollingRow& row : rolling_) {
+        const btScalar normal = m_tmpSolverContactConstraintPool[row.normal_row].m_appliedImpulse;
+        if (normal <= 0.0 && row.applied == 0.0) {
             continue;
         }
-        // The documented law: angular impulse up to mu_r r times the normal impulse
-        // (m_friction is the length mu_r r), with no cap at m_friction itself; a point without
-        // normal impulse has both limits at zero, and solving the row takes its impulse back.
-        const btScalar bound = normal > 0.0 ? row.m_friction * normal : 0.0;
-        row.m_lowerLimit = -bound;
-        row.m_upperLimit = bound;
+        // The documented law: angular impulse up to mu_r r times the normal impulse, with no
+        // cap at mu_r r itself; a point without normal impulse has both limits at zero, and
+        // solving the row takes its impulse back. solve_row's operations on an angular-only
+        // row.
+        const btScalar bound = normal > 0.0 ? row.length * normal : 0.0;
+        btSolverBody& a = m_tmpSolverBodyPool[row.body_a];
+        btSolverBody& b = m_tmpSolverBodyPool[row.body_b];
+        btScalar delta = row.rhs - row.applied * row.cfm;
+        delta -= row.axis_a.dot(a.m_deltaAngularVelocity) * row.jac_inv;
+        delta -= row.axis_b.dot(b.m_deltaAngularVelocity) * row.jac_inv;
+        const btScalar sum = row.applied + delta;
+        if (sum < -bound) {
+            delta = -bound - row.applied;
+            row.applied = -bound;
+        } else if (sum > bound) {
+            delta = bound - row.applied;
+            row.applied = bound;
+        } else {
+            row.applied = sum;
+        }
+        apply_angular(a, row.angular_a, delta);
+        apply_angular(b, row.angular_b, delta);
         // Counted in the iteration's residual, as Bullet counts its own pass over these rows
         // (the iterations stop early once no row changes a velocity by more than 1e-4 m/s).
-        const btScalar change = solve_row(m_tmpSolverBodyPool[row.m_solverBodyIdA],
-                                          m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+        const btScalar change = delta * (btScalar(1.) / row.jac_inv);
         residual = std::max(residual, change * change);
     }
-    rows.resizeNoInitialize(0);
     return residual;
 }
 
@@ -365,6 +406,10 @@ btScalar CoulombSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies
                                                       const btContactSolverInfo& info) {
     m_tmpSolverContactFrictionConstraintPool.resizeNoInitialize(point_friction_rows_);
     m_tmpSolverContactRollingFrictionConstraintPool.resizeNoInitialize(rolling_rows_);
+    for (int i = 0; i < rolling_rows_; ++i) {
+        m_tmpSolverContactRollingFrictionConstraintPool[i].m_appliedImpulse =
+            rolling_[static_cast<std::size_t>(i)].applied;
+    }
     report_patches();
     return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, body_count,
                                                                               info);

@@ -100,8 +100,30 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
                            const btContactSolverInfo& info) const;
     double slop(const btContactSolverInfo& info) const;
 
+    // A rolling-resistance row in the few fields its solve reads. Bullet's rolling rows are
+    // angular only (zero linear parts), and a pile's iterations spent more time reading its
+    // full rows than solving them (docs/heap_cost.md): solved from this copy, the same
+    // operations on the same numbers, without the zero linear terms.
+    struct RollingRow {
+        btVector3 axis_a;     // m_relpos1CrossNormal
+        btVector3 axis_b;     // m_relpos2CrossNormal
+        btVector3 angular_a;  // m_angularComponentA
+        btVector3 angular_b;  // m_angularComponentB
+        btScalar rhs = 0.0;
+        btScalar cfm = 0.0;
+        btScalar jac_inv = 0.0;  // m_jacDiagABInv
+        btScalar applied = 0.0;  // m_appliedImpulse
+        btScalar length = 0.0;   // m_friction: mu_r r, m
+        int body_a = 0;
+        int body_b = 0;
+        int normal_row = 0;  // its point's row in the contact pool
+    };
+
+    void copy_rolling_rows();
+
     double slop_rate_ = 0.0;  // m/s^2
     std::vector<Patch> patches_;
+    std::vector<RollingRow> rolling_;
     // Bullet's point-friction rows of the current group, hidden from its iterations.
     int point_friction_rows_ = 0;
     // Bullet's rolling-resistance rows of the current group, likewise hidden.
