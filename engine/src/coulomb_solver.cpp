@@ -39,6 +39,22 @@ double normal_velocity(const btSolverConstraint& row, const btSolverBody& a, con
     return v;
 }
 
+// Adds `delta` to a row's accumulated impulse `applied`, projected onto [lower, upper]; returns
+// the change made (Bullet's projection, in its order of operations).
+inline btScalar clamp_impulse(btScalar& applied, btScalar delta, btScalar lower, btScalar upper) {
+    const btScalar sum = applied + delta;
+    if (sum < lower) {
+        delta = lower - applied;
+        applied = lower;
+    } else if (sum > upper) {
+        delta = upper - applied;
+        applied = upper;
+    } else {
+        applied = sum;
+    }
+    return delta;
+}
+
 // One projected Gauss-Seidel update of a row between its limits, as Bullet's scalar row solver
 // makes it (the same operations in the same order, so the results stay bit for bit those of
 // calling it), but inlined: the engine's own rows (patch friction, twist, rolling resistance)
@@ -52,16 +68,7 @@ inline btScalar solve_row(btSolverBody& a, btSolverBody& b, btSolverConstraint& 
                                 row.m_relpos2CrossNormal.dot(b.internalGetDeltaAngularVelocity());
     delta -= velocity_a * row.m_jacDiagABInv;
     delta -= velocity_b * row.m_jacDiagABInv;
-    const btScalar sum = btScalar(row.m_appliedImpulse) + delta;
-    if (sum < row.m_lowerLimit) {
-        delta = row.m_lowerLimit - row.m_appliedImpulse;
-        row.m_appliedImpulse = row.m_lowerLimit;
-    } else if (sum > row.m_upperLimit) {
-        delta = row.m_upperLimit - row.m_appliedImpulse;
-        row.m_appliedImpulse = row.m_upperLimit;
-    } else {
-        row.m_appliedImpulse = sum;
-    }
+    delta = clamp_impulse(row.m_appliedImpulse, delta, row.m_lowerLimit, row.m_upperLimit);
     a.internalApplyImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA,
                            delta);
     b.internalApplyImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB,
@@ -214,16 +221,7 @@ btScalar CoulombSolver::bound_rolling_resistance() {
         btScalar delta = row.rhs - row.applied * row.cfm;
         delta -= row.axis_a.dot(a.m_deltaAngularVelocity) * row.jac_inv;
         delta -= row.axis_b.dot(b.m_deltaAngularVelocity) * row.jac_inv;
-        const btScalar sum = row.applied + delta;
-        if (sum < -bound) {
-            delta = -bound - row.applied;
-            row.applied = -bound;
-        } else if (sum > bound) {
-            delta = bound - row.applied;
-            row.applied = bound;
-        } else {
-            row.applied = sum;
-        }
+        delta = clamp_impulse(row.applied, delta, -bound, bound);
         apply_angular(a, row.angular_a, delta);
         apply_angular(b, row.angular_b, delta);
         // Counted in the iteration's residual, as Bullet counts its own pass over these rows
