@@ -99,10 +99,9 @@ void CoulombSolver::convertContacts(btPersistentManifold** manifolds, int manifo
     // order from the pool after this, so the iterations see no friction row.
     point_friction_rows_ = m_tmpSolverContactFrictionConstraintPool.size();
     m_tmpSolverContactFrictionConstraintPool.resizeNoInitialize(0);
-    // The rolling-resistance rows are solved by bound_rolling_resistance alone: Bullet's pass
-    // over them (bounded by min(mu_r r N, mu_r r), then solved again by ours) is hidden the
-    // same way.
-    rolling_rows_ = m_tmpSolverContactRollingFrictionConstraintPool.size();
+    // The rolling-resistance rows are solved by bound_rolling_resistance alone, from its copy:
+    // Bullet's pass over them (bounded by min(mu_r r N, mu_r r), then solved again by ours) is
+    // hidden the same way, and as its finish reads nothing back from them, for good.
     copy_rolling_rows();
     m_tmpSolverContactRollingFrictionConstraintPool.resizeNoInitialize(0);
 }
@@ -403,11 +402,6 @@ double CoulombSolver::impulse_to_stop(const btSolverConstraint& row) const {
 btScalar CoulombSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int body_count,
                                                       const btContactSolverInfo& info) {
     m_tmpSolverContactFrictionConstraintPool.resizeNoInitialize(point_friction_rows_);
-    m_tmpSolverContactRollingFrictionConstraintPool.resizeNoInitialize(rolling_rows_);
-    for (int i = 0; i < rolling_rows_; ++i) {
-        m_tmpSolverContactRollingFrictionConstraintPool[i].m_appliedImpulse =
-            rolling_[static_cast<std::size_t>(i)].applied;
-    }
     report_patches();
     return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, body_count,
                                                                               info);

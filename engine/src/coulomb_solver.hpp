@@ -126,8 +126,6 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
     std::vector<RollingRow> rolling_;
     // Bullet's point-friction rows of the current group, hidden from its iterations.
     int point_friction_rows_ = 0;
-    // Bullet's rolling-resistance rows of the current group, likewise hidden.
-    int rolling_rows_ = 0;
 };
 
 }  // namespace rockfall::engine
