@@ -108,11 +108,22 @@ void CoulombSolver::convertContacts(btPersistentManifold** manifolds, int manifo
 
 void CoulombSolver::copy_rolling_rows() {
     const btConstraintArray& rows = m_tmpSolverContactRollingFrictionConstraintPool;
-    rolling_.resize(static_cast<std::size_t>(rows.size()));
+    rolling_.clear();
     for (int i = 0; i < rows.size(); ++i) {
         const btSolverConstraint& row = rows[i];
         assert(row.m_contactNormal1.isZero() && row.m_contactNormal2.isZero());
-        RollingRow& copy = rolling_[static_cast<std::size_t>(i)];
+        // m_frictionIndex of a rolling row is the index of its point's normal row; a point's
+        // rows are consecutive.
+        if (rolling_.empty() || rolling_.back().normal_row != row.m_frictionIndex ||
+            rolling_.back().row_count == 3) {
+            RollingPoint& point = rolling_.emplace_back();
+            point.body_a = row.m_solverBodyIdA;
+            point.body_b = row.m_solverBodyIdB;
+            point.normal_row = row.m_frictionIndex;
+        }
+        RollingPoint& point = rolling_.back();
+        assert(point.body_a == row.m_solverBodyIdA && point.body_b == row.m_solverBodyIdB);
+        RollingRow& copy = point.rows[point.row_count++];
         copy.axis_a = row.m_relpos1CrossNormal;
         copy.axis_b = row.m_relpos2CrossNormal;
         copy.angular_a = row.m_angularComponentA;
@@ -122,10 +133,6 @@ void CoulombSolver::copy_rolling_rows() {
         copy.jac_inv = row.m_jacDiagABInv;
         copy.applied = row.m_appliedImpulse;
         copy.length = row.m_friction;
-        copy.body_a = row.m_solverBodyIdA;
-        copy.body_b = row.m_solverBodyIdB;
-        // m_frictionIndex of a rolling row is the index of its point's normal row.
-        copy.normal_row = row.m_frictionIndex;
     }
 }
 
@@ -205,28 +212,32 @@ btScalar CoulombSolver::solveSingleIteration(int iteration, btCollisionObject** 
 
 btScalar CoulombSolver::bound_rolling_resistance() {
     btScalar residual = 0.0;
-    for (RollingRow& row : rolling_) {
-        const btScalar normal = m_tmpSolverContactConstraintPool[row.normal_row].m_appliedImpulse;
-        if (normal <= 0.0 && row.applied == 0.0) {
-            continue;
+    for (RollingPoint& point : rolling_) {
+        const btScalar normal = m_tmpSolverContactConstraintPool[point.normal_row].m_appliedImpulse;
+        btSolverBody& a = m_tmpSolverBodyPool[point.body_a];
+        btSolverBody& b = m_tmpSolverBodyPool[point.body_b];
+        for (int k = 0; k < point.row_count; ++k) {
+            RollingRow& row = point.rows[k];
+            if (normal <= 0.0 && row.applied == 0.0) {
+                continue;
+            }
+            // The documented law: angular impulse up to mu_r r times the normal impulse, with
+            // no cap at mu_r r itself; a point without normal impulse has both limits at zero,
+            // and solving the row takes its impulse back. solve_row's operations on an
+            // angular-only row.
+            const btScalar bound = normal > 0.0 ? row.length * normal : 0.0;
+            btScalar delta = row.rhs - row.applied * row.cfm;
+            delta -= row.axis_a.dot(a.m_deltaAngularVelocity) * row.jac_inv;
+            delta -= row.axis_b.dot(b.m_deltaAngularVelocity) * row.jac_inv;
+            delta = clamp_impulse(row.applied, delta, -bound, bound);
+            apply_angular(a, row.angular_a, delta);
+            apply_angular(b, row.angular_b, delta);
+            // Counted in the iteration's residual, as Bullet counts its own pass over these
+            // rows (the iterations stop early once no row changes a velocity by more than
+            // 1e-4 m/s).
+            const btScalar change = delta * (btScalar(1.) / row.jac_inv);
+            residual = std::max(residual, change * change);
         }
-        // The documented law: angular impulse up to mu_r r times the normal impulse, with no
-        // cap at mu_r r itself; a point without normal impulse has both limits at zero, and
-        // solving the row takes its impulse back. solve_row's operations on an angular-only
-        // row.
-        const btScalar bound = normal > 0.0 ? row.length * normal : 0.0;
-        btSolverBody& a = m_tmpSolverBodyPool[row.body_a];
-        btSolverBody& b = m_tmpSolverBodyPool[row.body_b];
-        btScalar delta = row.rhs - row.applied * row.cfm;
-        delta -= row.axis_a.dot(a.m_deltaAngularVelocity) * row.jac_inv;
-        delta -= row.axis_b.dot(b.m_deltaAngularVelocity) * row.jac_inv;
-        delta = clamp_impulse(row.applied, delta, -bound, bound);
-        apply_angular(a, row.angular_a, delta);
-        apply_angular(b, row.angular_b, delta);
-        // Counted in the iteration's residual, as Bullet counts its own pass over these rows
-        // (the iterations stop early once no row changes a velocity by more than 1e-4 m/s).
-        const btScalar change = delta * (btScalar(1.) / row.jac_inv);
-        residual = std::max(residual, change * change);
     }
     return residual;
 }
@@ -357,14 +368,6 @@ double CoulombSolver::patch_normal(const Patch& patch) const {
 
 btScalar CoulombSolver::solve_patches() {
     btScalar residual = 0.0;
-    // Solving a row with both limits at the target sets its impulse to the target.
-    const auto set = [&](btSolverConstraint& row, btScalar lower, btScalar upper) {
-        row.m_lowerLimit = lower;
-        row.m_upperLimit = upper;
-        const btScalar change = solve_row(m_tmpSolverBodyPool[row.m_solverBodyIdA],
-                                          m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
-        residual = std::max(residual, change * change);
-    };
     for (Patch& patch : patches_) {
         const double bound = patch.mu * patch_normal(patch);
         // The impulse that stops the slip, both directions from the same velocities, projected
@@ -378,11 +381,21 @@ btScalar CoulombSolver::solve_patches() {
         const double magnitude = std::sqrt(target[0] * target[0] + target[1] * target[1]);
         const double scale = magnitude > bound ? bound / magnitude : 1.0;
         for (int k = 0; k < 2; ++k) {
-            set(patch.slide[k], scale * target[k], scale * target[k]);
+            btSolverConstraint& row = patch.slide[k];
+            row.m_lowerLimit = scale * target[k];
+            row.m_upperLimit = scale * target[k];
+            const btScalar change = solve_row(m_tmpSolverBodyPool[row.m_solverBodyIdA],
+                                              m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+            residual = std::max(residual, change * change);
         }
         if (patch.twist_radius > 0.0) {
+            btSolverConstraint& row = patch.twist;
             const double twist = bound * patch.twist_radius;
-            set(patch.twist, -twist, twist);
+            row.m_lowerLimit = -twist;
+            row.m_upperLimit = twist;
+            const btScalar change = solve_row(m_tmpSolverBodyPool[row.m_solverBodyIdA],
+                                              m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+            residual = std::max(residual, change * change);
         }
     }
     return residual;

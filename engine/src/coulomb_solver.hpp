@@ -114,16 +114,22 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
         btScalar jac_inv = 0.0;  // m_jacDiagABInv
         btScalar applied = 0.0;  // m_appliedImpulse
         btScalar length = 0.0;   // m_friction: mu_r r, m
+    };
+    // A contact point's rolling rows (Bullet adds them together, about its normal and two
+    // tangents), which share the point's normal row and bodies: read once for the three.
+    struct RollingPoint {
+        RollingRow rows[3];
+        int row_count = 0;
         int body_a = 0;
         int body_b = 0;
-        int normal_row = 0;  // its point's row in the contact pool
+        int normal_row = 0;  // the point's row in the contact pool
     };
 
     void copy_rolling_rows();
 
     double slop_rate_ = 0.0;  // m/s^2
     std::vector<Patch> patches_;
-    std::vector<RollingRow> rolling_;
+    std::vector<RollingPoint> rolling_;
     // Bullet's point-friction rows of the current group, hidden from its iterations.
     int point_friction_rows_ = 0;
 };
