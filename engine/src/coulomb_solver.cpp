@@ -55,6 +55,15 @@ inline btScalar clamp_impulse(btScalar& applied, btScalar delta, btScalar lower,
     return delta;
 }
 
+// The bodies' shares of a change `delta` of a row's impulse.
+inline void apply_impulse(btSolverBody& a, btSolverBody& b, const btSolverConstraint& row,
+                          btScalar delta) {
+    a.internalApplyImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA,
+                           delta);
+    b.internalApplyImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB,
+                           delta);
+}
+
 // One projected Gauss-Seidel update of a row between its limits, as Bullet's scalar row solver
 // makes it (the same operations in the same order, so the results stay bit for bit those of
 // calling it), but inlined: the engine's own rows (patch friction, twist, rolling resistance)
@@ -69,10 +78,19 @@ inline btScalar solve_row(btSolverBody& a, btSolverBody& b, btSolverConstraint& 
     delta -= velocity_a * row.m_jacDiagABInv;
     delta -= velocity_b * row.m_jacDiagABInv;
     delta = clamp_impulse(row.m_appliedImpulse, delta, row.m_lowerLimit, row.m_upperLimit);
-    a.internalApplyImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA,
-                           delta);
-    b.internalApplyImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB,
-                           delta);
+    apply_impulse(a, b, row, delta);
+    return delta * (btScalar(1.) / row.m_jacDiagABInv);
+}
+
+// Sets a row's impulse to `target`: what solve_row does with both limits at the target, whose
+// projection discards the row's velocity (except where the unprojected sum equals the target to
+// the last bit: solve_row then keeps its own rounding of the change, an ulp from this one's).
+// Returns solve_row's change.
+inline btScalar set_impulse(btSolverBody& a, btSolverBody& b, btSolverConstraint& row,
+                            btScalar target) {
+    const btScalar delta = target - row.m_appliedImpulse;
+    row.m_appliedImpulse = target;
+    apply_impulse(a, b, row, delta);
     return delta * (btScalar(1.) / row.m_jacDiagABInv);
 }
 
@@ -382,10 +400,9 @@ btScalar CoulombSolver::solve_patches() {
         const double scale = magnitude > bound ? bound / magnitude : 1.0;
         for (int k = 0; k < 2; ++k) {
             btSolverConstraint& row = patch.slide[k];
-            row.m_lowerLimit = scale * target[k];
-            row.m_upperLimit = scale * target[k];
-            const btScalar change = solve_row(m_tmpSolverBodyPool[row.m_solverBodyIdA],
-                                              m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+            const btScalar change =
+                set_impulse(m_tmpSolverBodyPool[row.m_solverBodyIdA],
+                            m_tmpSolverBodyPool[row.m_solverBodyIdB], row, scale * target[k]);
             residual = std::max(residual, change * change);
         }
         if (patch.twist_radius > 0.0) {
