@@ -117,41 +117,9 @@ void CoulombSolver::convertContacts(btPersistentManifold** manifolds, int manifo
     // order from the pool after this, so the iterations see no friction row.
     point_friction_rows_ = m_tmpSolverContactFrictionConstraintPool.size();
     m_tmpSolverContactFrictionConstraintPool.resizeNoInitialize(0);
-    // The rolling-resistance rows are solved by bound_rolling_resistance alone, from its copy:
-    // Bullet's pass over them (bounded by min(mu_r r N, mu_r r), then solved again by ours) is
-    // hidden the same way, and as its finish reads nothing back from them, for good.
-    copy_rolling_rows();
+    // Bullet's rolling-resistance rows (three per point, bounded by min(mu_r r N, mu_r r)) are
+    // replaced by the patches' (add_rolling_rows); its finish reads nothing back from them.
     m_tmpSolverContactRollingFrictionConstraintPool.resizeNoInitialize(0);
-}
-
-void CoulombSolver::copy_rolling_rows() {
-    const btConstraintArray& rows = m_tmpSolverContactRollingFrictionConstraintPool;
-    rolling_.clear();
-    for (int i = 0; i < rows.size(); ++i) {
-        const btSolverConstraint& row = rows[i];
-        assert(row.m_contactNormal1.isZero() && row.m_contactNormal2.isZero());
-        // m_frictionIndex of a rolling row is the index of its point's normal row; a point's
-        // rows are consecutive.
-        if (rolling_.empty() || rolling_.back().normal_row != row.m_frictionIndex ||
-            rolling_.back().row_count == 3) {
-            RollingPoint& point = rolling_.emplace_back();
-            point.body_a = row.m_solverBodyIdA;
-            point.body_b = row.m_solverBodyIdB;
-            point.normal_row = row.m_frictionIndex;
-        }
-        RollingPoint& point = rolling_.back();
-        assert(point.body_a == row.m_solverBodyIdA && point.body_b == row.m_solverBodyIdB);
-        RollingRow& copy = point.rows[point.row_count++];
-        copy.axis_a = row.m_relpos1CrossNormal;
-        copy.axis_b = row.m_relpos2CrossNormal;
-        copy.angular_a = row.m_angularComponentA;
-        copy.angular_b = row.m_angularComponentB;
-        copy.rhs = row.m_rhs;
-        copy.cfm = row.m_cfm;
-        copy.jac_inv = row.m_jacDiagABInv;
-        copy.applied = row.m_appliedImpulse;
-        copy.length = row.m_friction;
-    }
 }
 
 void CoulombSolver::aim_restitution_at_touch(const btContactSolverInfo& info) {
@@ -220,30 +188,32 @@ btScalar CoulombSolver::solveSingleIteration(int iteration, btCollisionObject** 
                                              int manifold_count, btTypedConstraint** constraints,
                                              int constraint_count, const btContactSolverInfo& info,
                                              btIDebugDraw* debug_drawer) {
+    if (iteration == 0) update_patch_normals();
     const btScalar friction = iteration < info.m_numIterations ? solve_patches() : 0.0;
     const btScalar residual = btSequentialImpulseConstraintSolver::solveSingleIteration(
         iteration, bodies, body_count, manifolds, manifold_count, constraints, constraint_count,
         info, debug_drawer);
+    // Nothing changes the normal impulses between here and the next iteration's friction.
+    update_patch_normals();
     const btScalar rolling = bound_rolling_resistance();
     return std::max({residual, friction, rolling});
 }
 
 btScalar CoulombSolver::bound_rolling_resistance() {
     btScalar residual = 0.0;
-    for (RollingPoint& point : rolling_) {
-        const btScalar normal = m_tmpSolverContactConstraintPool[point.normal_row].m_appliedImpulse;
-        btSolverBody& a = m_tmpSolverBodyPool[point.body_a];
-        btSolverBody& b = m_tmpSolverBodyPool[point.body_b];
-        for (int k = 0; k < point.row_count; ++k) {
-            RollingRow& row = point.rows[k];
+    for (RollingPatch& rolling : rolling_) {
+        const double normal = patches_[static_cast<std::size_t>(rolling.patch)].normal;
+        btSolverBody& a = m_tmpSolverBodyPool[rolling.body_a];
+        btSolverBody& b = m_tmpSolverBodyPool[rolling.body_b];
+        for (RollingRow& row : rolling.rows) {
             if (normal <= 0.0 && row.applied == 0.0) {
                 continue;
             }
             // The documented law: angular impulse up to mu_r r times the normal impulse, with
-            // no cap at mu_r r itself; a point without normal impulse has both limits at zero,
+            // no cap at mu_r r itself; a patch without normal impulse has both limits at zero,
             // and solving the row takes its impulse back. solve_row's operations on an
             // angular-only row.
-            const btScalar bound = normal > 0.0 ? row.length * normal : 0.0;
+            const btScalar bound = row.length * normal;
             btScalar delta = row.rhs - row.applied * row.cfm;
             delta -= row.axis_a.dot(a.m_deltaAngularVelocity) * row.jac_inv;
             delta -= row.axis_b.dot(b.m_deltaAngularVelocity) * row.jac_inv;
@@ -278,6 +248,7 @@ void CoulombSolver::disable_point_friction() {
 void CoulombSolver::build_patches(btPersistentManifold** manifolds, int manifold_count,
                                   const btContactSolverInfo& info) {
     patches_.clear();
+    rolling_.clear();
     // Bullet adds the normal rows manifold by manifold, each point that is close enough.
     const int row_total = m_tmpSolverContactConstraintPool.size();
     int row = 0;
@@ -368,11 +339,51 @@ void CoulombSolver::add_patch(btPersistentManifold& manifold, const int* rows, i
     }
     patch.mu = point.m_combinedFriction;
     patch.twist_radius = geometry.twist_radius;
-    if (patch.twist_radius > 0.0) {
+    // Bullet's condition for its rolling rows, spin included.
+    if (point.m_combinedRollingFriction > 0.0) {
+        patch.spin_length = point.m_combinedSpinningFriction;
+        add_rolling_rows(patch, normal, point, body0, body1);
+    }
+    if (patch.twist_radius > 0.0 || patch.spin_length > 0.0) {
         setupTorsionalFrictionConstraint(patch.twist, normal, id_a, id_b, point, 0.0, rel_pos1,
                                          rel_pos2, body0, body1, info.m_sor);
     }
     patches_.push_back(patch);
+}
+
+void CoulombSolver::add_rolling_rows(const Patch& patch, const btVector3& normal,
+                                     btManifoldPoint& point, btCollisionObject* body0,
+                                     btCollisionObject* body1) {
+    // The rows of all the patch's points about one axis are one constraint (a rolling row has
+    // no lever arm), bounded by the sum of their bounds: one row per axis.
+    const int id_a = patch.slide[0].m_solverBodyIdA;
+    const int id_b = patch.slide[0].m_solverBodyIdB;
+    btVector3 axes[2];
+    btPlaneSpace1(normal, axes[0], axes[1]);
+    RollingPatch& rolling = rolling_.emplace_back();
+    rolling.body_a = id_a;
+    rolling.body_b = id_b;
+    rolling.patch = static_cast<int>(patches_.size());
+    const btVector3 unused(0, 0, 0);
+    for (int k = 0; k < 2; ++k) {
+        btSolverConstraint row;
+        setupTorsionalFrictionConstraint(row, axes[k].normalized(), id_a, id_b, point,
+                                         point.m_combinedRollingFriction, unused, unused, body0,
+                                         body1, 1.0);
+        RollingRow& copy = rolling.rows[k];
+        copy.axis_a = row.m_relpos1CrossNormal;
+        copy.axis_b = row.m_relpos2CrossNormal;
+        copy.angular_a = row.m_angularComponentA;
+        copy.angular_b = row.m_angularComponentB;
+        copy.rhs = row.m_rhs;
+        copy.cfm = row.m_cfm;
+        copy.jac_inv = row.m_jacDiagABInv;
+        copy.length = row.m_friction;
+    }
+}
+
+void CoulombSolver::update_patch_normals() {
+    for (Patch& patch : patches_) patch.normal = patch_normal(patch);
 }
 
 double CoulombSolver::patch_normal(const Patch& patch) const {
@@ -387,7 +398,7 @@ double CoulombSolver::patch_normal(const Patch& patch) const {
 btScalar CoulombSolver::solve_patches() {
     btScalar residual = 0.0;
     for (Patch& patch : patches_) {
-        const double bound = patch.mu * patch_normal(patch);
+        const double bound = patch.mu * patch.normal;
         // The impulse that stops the slip, both directions from the same velocities, projected
         // onto Coulomb's disc: the friction then opposes the slip. Solving the rows one after
         // the other let the second hold the slip's direction (a block sliding 5 degrees off
@@ -405,9 +416,11 @@ btScalar CoulombSolver::solve_patches() {
                             m_tmpSolverBodyPool[row.m_solverBodyIdB], row, scale * target[k]);
             residual = std::max(residual, change * change);
         }
-        if (patch.twist_radius > 0.0) {
+        if (patch.twist_radius > 0.0 || patch.spin_length > 0.0) {
+            // Coulomb's twist and the rolling resistance's spin, one constraint about the
+            // normal.
             btSolverConstraint& row = patch.twist;
-            const double twist = bound * patch.twist_radius;
+            const double twist = patch.normal * (patch.mu * patch.twist_radius + patch.spin_length);
             row.m_lowerLimit = -twist;
             row.m_upperLimit = twist;
             const btScalar change = solve_row(m_tmpSolverBodyPool[row.m_solverBodyIdA],
@@ -457,6 +470,7 @@ void CoulombSolver::report_patches() {
         }
     }
     patches_.clear();
+    rolling_.clear();
 }
 
 }  // namespace rockfall::engine

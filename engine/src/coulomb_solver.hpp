@@ -12,16 +12,17 @@ namespace rockfall::engine {
 // impulse is positive; when a point's normal impulse falls to zero in a later iteration (the
 // load moves to other points of a face), its friction impulse stays and acts without any
 // normal force. A block sliding on a 30 degree incline then accelerated 4 % (mu = 0.3) to 16 %
-// (mu = 0.5) below g (sin t - mu cos t). In each iteration this solver takes back the
-// rolling-resistance impulses of points that carry no normal impulse; the sliding friction is
+// (mu = 0.5) below g (sin t - mu cos t). This solver's friction and rolling resistance are
 // the patch's below, bounded by the patch's whole normal impulse.
 //
 // Bullet also caps each rolling-friction row at its coefficient (a length, mu_r r) times one
 // unit of impulse, whatever the normal impulse: at an impact, where the normal impulse is
 // tens of N s in one step, the rolling resistance all but vanished (a 0.2 m sphere kept 99.8 %
-// of its spin through a landing that the law mu_r r N slows by 7 rad/s). This solver hides the
-// rolling rows from Bullet's iterations and solves each, after Bullet's pass over the normal
-// rows, with the law's bound mu_r r times its point's normal impulse (zero without one).
+// of its spin through a landing that the law mu_r r N slows by 7 rad/s). This solver drops
+// Bullet's rolling rows (three per point) and solves its own per patch, after Bullet's pass
+// over the normal rows, with the law's bound mu_r r times the patch's normal impulse (zero
+// without one): one row about each tangent (a rolling row has no lever arm, so the points'
+// rows about one axis are one constraint), and the spin's bound added to the patch's twist.
 //
 // Bullet bounds each point's friction by that point's normal impulse, and the iterative
 // solver spreads a face's normal impulse over its points arbitrarily (one corner one step,
@@ -82,6 +83,8 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
         btSolverConstraint twist;
         double mu = 0.0;
         double twist_radius = 0.0;  // m
+        double spin_length = 0.0;   // the rolling resistance's about the normal, mu_r r, m
+        double normal = 0.0;        // its points' normal impulse after the last pass over them
     };
 
     void disable_point_friction();
@@ -100,10 +103,10 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
                            const btContactSolverInfo& info) const;
     double slop(const btContactSolverInfo& info) const;
 
-    // A rolling-resistance row in the few fields its solve reads. Bullet's rolling rows are
-    // angular only (zero linear parts), and a pile's iterations spent more time reading its
-    // full rows than solving them (docs/heap_cost.md): solved from this copy, the same
-    // operations on the same numbers, without the zero linear terms.
+    // A rolling-resistance row in the few fields its solve reads: angular only (zero linear
+    // parts), set up by Bullet's setupTorsionalFrictionConstraint and solved with solve_row's
+    // operations without the zero linear terms (a pile's iterations spent more time reading
+    // full rows than solving them: docs/heap_cost.md).
     struct RollingRow {
         btVector3 axis_a;     // m_relpos1CrossNormal
         btVector3 axis_b;     // m_relpos2CrossNormal
@@ -115,21 +118,22 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
         btScalar applied = 0.0;  // m_appliedImpulse
         btScalar length = 0.0;   // m_friction: mu_r r, m
     };
-    // A contact point's rolling rows (Bullet adds them together, about its normal and two
-    // tangents), which share the point's normal row and bodies: read once for the three.
-    struct RollingPoint {
-        RollingRow rows[3];
-        int row_count = 0;
+    // A patch's two rolling rows, about the tangents of its normal, both bounded by mu_r r
+    // times the patch's whole normal impulse.
+    struct RollingPatch {
+        RollingRow rows[2];
         int body_a = 0;
         int body_b = 0;
-        int normal_row = 0;  // the point's row in the contact pool
+        int patch = 0;  // its index in patches_
     };
 
-    void copy_rolling_rows();
+    void add_rolling_rows(const Patch& patch, const btVector3& normal, btManifoldPoint& point,
+                          btCollisionObject* body0, btCollisionObject* body1);
+    void update_patch_normals();
 
     double slop_rate_ = 0.0;  // m/s^2
     std::vector<Patch> patches_;
-    std::vector<RollingPoint> rolling_;
+    std::vector<RollingPatch> rolling_;
     // Bullet's point-friction rows of the current group, hidden from its iterations.
     int point_friction_rows_ = 0;
 };

@@ -16,6 +16,7 @@ inline constexpr double kGravity = scenes::gravity;  // m/s2
 using scenes::downslope;
 using scenes::plane_scenario;
 using scenes::radians;
+using scenes::state_at;
 using scenes::trajectory;
 
 }  // namespace rockfall::engine::test

@@ -61,6 +61,34 @@ TEST_CASE("rolling resistance acts through an impact: the spin drops by mu_r r J
     CHECK_THAT(after.angular_velocity.z(), WithinAbs(0.0, 1e-9));
 }
 
+TEST_CASE("rolling resistance slows a block spinning on its face by mu_r r m g / I",
+          "[verification][contact]") {
+    // The rows of a face's points about one axis are one constraint, bounded by mu_r r times
+    // the face's whole normal impulse (one row per axis per patch, merged with the patch's
+    // twist about the normal): without friction only that moment slows the spin.
+    const double dt = GENERATE(1e-3, 5e-4);
+    const double rolling = 0.05;
+    engine::Scenario scenario =
+        plane_scenario(0.0, shapes::RockKind::massive, {0.0, 0.0, rolling}, dt);
+    const double spin = 10.0;  // rad/s about the vertical, the block's short axis
+    scenario.rocks.front().release.spin = Vec3(0.0, 0.0, spin);
+    scenario.numerics.max_time = 0.7;
+    const std::vector<RockState> states = trajectory(scenario, 0.01);
+    const shapes::RockGeometry rock = scenario.rocks.front().rock.geometry();
+    const double r = 0.5 * rock.nominal_size;
+    const double expected = rolling * r * kGravity * rock.properties.volume /
+                            rock.properties.principal_moments.z();  // rad/s^2
+    const RockState& from = engine::test::state_at(states, 0.1);
+    const RockState& to = engine::test::state_at(states, 0.6);
+    const double measured =
+        (from.angular_velocity.z() - to.angular_velocity.z()) / (to.time - from.time);
+    INFO("dt = " << dt << " s: spin " << from.angular_velocity.z() << " -> "
+                 << to.angular_velocity.z() << " rad/s, deceleration " << measured
+                 << " rad/s2, expected " << expected);
+    REQUIRE(to.angular_velocity.z() > 0.0);
+    CHECK_THAT(measured, WithinRel(expected, 0.01));
+}
+
 TEST_CASE("a frictionless sphere landing while it moves along the surface keeps its spin",
           "[verification][contact]") {
     // Bullet's sphere-box manifold kept the points of earlier steps (found on the way down,
