@@ -4,7 +4,6 @@
 #include "friction_patch.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <numbers>
 
@@ -364,7 +363,7 @@ void CoulombSolver::add_rolling_rows(const Patch& patch, const btVector3& normal
     rolling.body_a = id_a;
     rolling.body_b = id_b;
     rolling.patch = static_cast<int>(patches_.size());
-    const btVector3 unused(0, 0, 0);
+    const btVector3 unused(0, 0, 0);  // an angular row reads neither lever arm nor relaxation
     for (int k = 0; k < 2; ++k) {
         btSolverConstraint row;
         setupTorsionalFrictionConstraint(row, axes[k].normalized(), id_a, id_b, point,
