@@ -382,16 +382,13 @@ void CoulombSolver::add_rolling_rows(const Patch& patch, const btVector3& normal
 }
 
 void CoulombSolver::update_patch_normals() {
-    for (Patch& patch : patches_) patch.normal = patch_normal(patch);
-}
-
-double CoulombSolver::patch_normal(const Patch& patch) const {
-    double normal = 0.0;
-    for (int k = 0; k < patch.row_count; ++k) {
-        normal += std::max<btScalar>(
-            0.0, m_tmpSolverContactConstraintPool[patch.rows[k]].m_appliedImpulse);
+    for (Patch& patch : patches_) {
+        patch.normal = 0.0;
+        for (int k = 0; k < patch.row_count; ++k) {
+            patch.normal += std::max<btScalar>(
+                0.0, m_tmpSolverContactConstraintPool[patch.rows[k]].m_appliedImpulse);
+        }
     }
-    return normal;
 }
 
 btScalar CoulombSolver::solve_patches() {
@@ -455,7 +452,8 @@ void CoulombSolver::report_patches() {
     for (const Patch& patch : patches_) {
         const btVector3 impulse = patch.directions[0] * patch.slide[0].m_appliedImpulse +
                                   patch.directions[1] * patch.slide[1].m_appliedImpulse;
-        const double normal = patch_normal(patch);
+        // The normal impulses as the last iteration left them (solveSingleIteration).
+        const double normal = patch.normal;
         for (int k = 0; k < patch.row_count; ++k) {
             const btSolverConstraint& row = m_tmpSolverContactConstraintPool[patch.rows[k]];
             const auto* point = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);

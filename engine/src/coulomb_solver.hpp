@@ -92,7 +92,6 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
                        const btContactSolverInfo& info);
     void add_patch(btPersistentManifold& manifold, const int* rows, int row_count,
                    const btContactSolverInfo& info);
-    double patch_normal(const Patch& patch) const;
     btScalar solve_patches();
     double impulse_to_stop(const btSolverConstraint& row) const;
     void report_patches();
@@ -129,6 +128,7 @@ class CoulombSolver : public btSequentialImpulseConstraintSolver {
 
     void add_rolling_rows(const Patch& patch, const btVector3& normal, btManifoldPoint& point,
                           btCollisionObject* body0, btCollisionObject* body1);
+    // Each patch's normal: the sum of its points' positive normal impulses.
     void update_patch_normals();
 
     double slop_rate_ = 0.0;  // m/s^2

@@ -73,8 +73,9 @@ TEST_CASE("seed 000 Fig. 5: small Cr goes with a more negative V' (bars on)",
 
 // A documented miss (docs/validation.md, "Seed 000: motion on the slope"): without bars the
 // rocks past 4 m are nearly all rolling spheres, and the thirds by Cr differ by less than their
-// scatter: the lowest third was below the highest by a hair (-0.1360 against -0.1346) and is
-// above it since resting contacts stopped jittering (-0.131 against -0.143 on 2026-12-07).
+// scatter: the lowest third was below the highest by a hair (-0.1360 against -0.1346), above it
+// from the day resting contacts stopped jittering (-0.131 against -0.143 on 2026-12-07) and is
+// below it again since the rolling rows per contact patch (-0.136 against -0.103).
 // [!mayfail] keeps the check running and reported without failing the suite.
 TEST_CASE("seed 000 Fig. 5 without bars: small Cr goes with a more negative V'",
           "[report][stations][validation][!mayfail]") {
@@ -85,7 +86,7 @@ TEST_CASE("seed 000 Fig. 5 without bars: small Cr goes with a more negative V'",
 }
 
 // A documented miss (docs/validation.md, "Seed 000: motion on the slope"): the simulated slope of w
-// on v at the toe is less than half as large with bars as without (3.46 against 8.02 rad/m over
+// on v at the toe is less than half as large with bars as without (3.70 against 8.03 rad/m over
 // all shapes, 2026-12-07), where the paper finds it larger with bars. Without bars the spheres roll
 // without slipping and reach the toe at nearly one speed with w = v / r, so the spheres' spread of
 // sizes makes the steep part of the line; the blocks and slabs slide slowly. [!mayfail] keeps the
