@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <utility>
@@ -216,7 +218,7 @@ ColumnCollapse column_collapse(double aspect, int cells_per_length,
     add_box_particles<2>(column, axis_box(Vec3(0.0, -0.5, 0.0), Vec3(length, 0.5, height)), h / 2.0,
                          kSoilDensity);
     SolverSettings s;
-    s.threads = 1;
+    s.threads = numerics.threads;
     s.cell_size = h;
     s.cfl = numerics.cfl;
     s.flip = numerics.flip;
@@ -226,42 +228,92 @@ ColumnCollapse column_collapse(double aspect, int cells_per_length,
     std::vector<StaticBoundary> box{floor_solid(mu),
                                     solid(axis_box(Vec3(-1.0, -1.0, -1.0), Vec3(0.0, 1.0, 10.0)),
                                           BoundaryKind::frictional, mu, 1)};
-    Solver<2> solver(s, verification_soil(), std::move(column), std::move(box));
+    DruckerPrager soil = verification_soil();
+    soil.friction_angle_deg = numerics.friction_angle_deg;
+    Solver<2> solver(s, soil, std::move(column), std::move(box));
     set_geostatic_stress<2>(solver.particles(), height, g, kSoilK0);
     ColumnCollapse result;
     result.aspect = aspect;
     result.cells_per_length = cells_per_length;
+    const Particles<2>& particles = solver.particles();
     const double time_scale = std::sqrt(height / g);
+    bool early = true;
     while (solver.time() < 20.0 * time_scale) {
         const StepReport& r = solver.step(solver.stable_time_step());
         result.clamped_steps += r.clamped_particles > 0 ? 1 : 0;
+        if (early && solver.time() >= time_scale) {
+            early = false;
+            for (std::size_t p = 0; p < particles.size(); ++p) {
+                result.early_kinetic_energy +=
+                    0.5 * particles.mass[p] * particles.velocity[p].squaredNorm();
+            }
+        }
         if (solver.time() > 2.0 * time_scale && r.max_speed < 0.005 * std::sqrt(g * length)) break;
     }
     double front = 0.0;
-    for (const Vec<2>& x : solver.particles().position) front = std::max(front, x[0]);
+    for (std::size_t p = 0; p < particles.size(); ++p) {
+        front = std::max(front, particles.position[p][0]);
+        result.centre_of_mass += particles.mass[p] * particles.position[p];
+    }
+    result.centre_of_mass /= particles.total_mass();
     result.runout = (front + h / 4.0 - length) / length;
     result.time = solver.time();
-    result.deposit = solver.particles().position;
-    result.deposit_mass = solver.particles().mass;
+    result.deposit = particles.position;
+    result.deposit_mass = particles.mass;
     return result;
 }
 
-double deposit_front(const ColumnCollapse& collapse, double thickness) {
-    const double length = kCollapseLength;
-    const double h = length / collapse.cells_per_length;
-    std::vector<double> area;
+namespace {
+
+// The deposit's thickness per h-wide grid column from x = 0 (m): its particles' mass over
+// (1600 kg/m3 h). Particles behind the back wall are left out.
+std::vector<double> column_thickness(const ColumnCollapse& collapse) {
+    const double h = kCollapseLength / collapse.cells_per_length;
+    std::vector<double> thickness;
     for (std::size_t i = 0; i < collapse.deposit.size(); ++i) {
         const double x = collapse.deposit[i][0];
         if (x < 0.0) continue;
         const auto column = static_cast<std::size_t>(x / h);
-        if (column >= area.size()) area.resize(column + 1, 0.0);
-        area[column] += collapse.deposit_mass[i] / kSoilDensity;
+        if (column >= thickness.size()) thickness.resize(column + 1, 0.0);
+        thickness[column] += collapse.deposit_mass[i] / (kSoilDensity * h);
     }
+    return thickness;
+}
+
+}  // namespace
+
+double deposit_front(const ColumnCollapse& collapse, double thickness) {
+    const double h = kCollapseLength / collapse.cells_per_length;
+    const std::vector<double> column = column_thickness(collapse);
     double front = 0.0;
-    for (std::size_t c = 0; c < area.size(); ++c) {
-        if (area[c] / h > thickness) front = static_cast<double>(c + 1) * h;
+    for (std::size_t c = 0; c < column.size(); ++c) {
+        if (column[c] > thickness) front = static_cast<double>(c + 1) * h;
     }
-    return (front - length) / length;
+    return (front - kCollapseLength) / kCollapseLength;
+}
+
+double surface_toe(const ColumnCollapse& collapse, double lower, double upper) {
+    const double h = kCollapseLength / collapse.cells_per_length;
+    const std::vector<double> column = column_thickness(collapse);
+    const auto thickest = std::max_element(column.begin(), column.end()) - column.begin();
+    // Least-squares line thickness = t0 + slope x through the columns' centres.
+    double n = 0.0, sx = 0.0, st = 0.0, sxx = 0.0, sxt = 0.0;
+    for (auto c = thickest + 1; c < static_cast<std::ptrdiff_t>(column.size()); ++c) {
+        const double t = column[static_cast<std::size_t>(c)];
+        if (t < lower || t > upper) continue;
+        const double x = (static_cast<double>(c) + 0.5) * h;
+        n += 1.0;
+        sx += x;
+        st += t;
+        sxx += x * x;
+        sxt += x * t;
+    }
+    const double denominator = n * sxx - sx * sx;
+    if (n < 2.0 || !(denominator > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+    const double slope = (n * sxt - sx * st) / denominator;
+    if (!(slope < 0.0)) return std::numeric_limits<double>::quiet_NaN();
+    const double intercept = (st - slope * sx) / n;
+    return (-intercept / slope - kCollapseLength) / kCollapseLength;
 }
 
 BlockSlide sliding_block(double angle_deg, double friction_angle_deg, double duration,

@@ -80,10 +80,11 @@ TEST_CASE("Column collapse: APIC's runout depends on the time step, FLIP's much 
     CHECK(std::abs(flip_short / flip - 1.0) < 0.05);
 }
 
-TEST_CASE("Deposit front: the far edge of the last grid column thicker than the threshold",
-          "[mpm][verification]") {
-    // 60 columns 0.01 m wide (L0 / h = 20) of linearly decreasing thickness 0.1 (1 - c / 60) m
-    // at 1600 kg/m3, two particles per column, and one stray particle behind the back wall.
+namespace {
+
+// 60 columns 0.01 m wide (L0 / h = 20) of linearly decreasing thickness 0.1 (1 - c / 60) m at
+// 1600 kg/m3, two particles per column, and one stray particle behind the back wall.
+rockfall::mpm::verification::ColumnCollapse wedge_deposit() {
     rockfall::mpm::verification::ColumnCollapse deposit;
     deposit.cells_per_length = 20;
     const double h = 0.01;
@@ -96,9 +97,37 @@ TEST_CASE("Deposit front: the far edge of the last grid column thicker than the 
     }
     deposit.deposit.emplace_back(-0.005, 0.0);
     deposit.deposit_mass.push_back(100.0);
+    return deposit;
+}
+
+}  // namespace
+
+TEST_CASE("Deposit front: the far edge of the last grid column thicker than the threshold",
+          "[mpm][verification]") {
+    const auto deposit = wedge_deposit();
     using rockfall::mpm::verification::deposit_front;
     // Thicker than 0.0505 m: columns 0..29, front 0.30 m; than 0.0205 m: 0..47, front 0.48 m.
     CHECK_THAT(deposit_front(deposit, 0.0505), Catch::Matchers::WithinAbs(0.5, 1e-12));
     CHECK_THAT(deposit_front(deposit, 0.0205), Catch::Matchers::WithinAbs(1.4, 1e-12));
     CHECK_THAT(deposit_front(deposit, 1.0), Catch::Matchers::WithinAbs(-1.0, 1e-12));
+}
+
+TEST_CASE("Surface toe: the deposit's surface line extended to zero thickness",
+          "[mpm][verification]") {
+    using rockfall::mpm::verification::surface_toe;
+    // The wedge's thickness at column centre x is 0.1 (1 - (x / h - 0.5) / 60) m: zero at
+    // x = 60.5 h = 0.605 m, runout (0.605 - 0.2) / 0.2 = 2.025, whichever band is fitted.
+    auto deposit = wedge_deposit();
+    CHECK_THAT(surface_toe(deposit, 0.01, 0.03), Catch::Matchers::WithinAbs(2.025, 1e-9));
+    CHECK_THAT(surface_toe(deposit, 0.05, 0.09), Catch::Matchers::WithinAbs(2.025, 1e-9));
+    // A lump (0.05 m thick) past the wedge does not enter the fit; a thin column inside the
+    // band does.
+    deposit.deposit.emplace_back(0.805, 0.0);
+    deposit.deposit_mass.push_back(1600.0 * 0.01 * 0.05);
+    CHECK_THAT(surface_toe(deposit, 0.01, 0.03), Catch::Matchers::WithinAbs(2.025, 1e-9));
+    deposit.deposit.emplace_back(0.795, 0.0);
+    deposit.deposit_mass.push_back(1600.0 * 0.01 * 0.02);
+    CHECK(surface_toe(deposit, 0.01, 0.03) > 2.025 + 1e-3);
+    // Fewer than two columns in the band: no line.
+    CHECK(std::isnan(surface_toe(deposit, 0.0995, 0.1)));
 }

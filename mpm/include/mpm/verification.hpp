@@ -87,6 +87,9 @@ struct ColumnCollapse {
     /// Final particle positions (x, z), m, and masses per metre of width, kg/m.
     std::vector<Vec<2>> deposit;
     std::vector<double> deposit_mass;
+    /// Centre of mass of the deposit (x, z), m, and the kinetic energy at t = sqrt(H0 / g), J/m.
+    Vec<2> centre_of_mass = Vec<2>::Zero();
+    double early_kinetic_energy = 0.0;
 };
 
 /// Runout (x_f - L0) / L0 to the front x_f of the part of the deposit thicker than `thickness`
@@ -97,10 +100,22 @@ struct ColumnCollapse {
 /// which a finer grid resolves further.
 double deposit_front(const ColumnCollapse& collapse, double thickness);
 
-/// The collapse's transfer settings (SolverSettings::cfl and flip).
+/// Runout (x_t - L0) / L0 to the toe x_t of the deposit's surface: a least-squares line through
+/// the thickness (as in deposit_front) of the h-wide grid columns past the thickest one whose
+/// thickness lies in [lower, upper] (m), at the columns' centres, extended to zero thickness.
+/// It reads the body of the deposit, not its tail, and so converges under refinement where the
+/// farthest particle does not (docs/column_collapse.md). NaN with fewer than two such columns
+/// or a line that does not fall.
+double surface_toe(const ColumnCollapse& collapse, double lower, double upper);
+
+/// The collapse's settings: the transfer (SolverSettings::cfl and flip), the solver's threads
+/// (results do not depend on them) and the soil's friction angle (deg; the cone matched in
+/// plane strain; the floor and back wall keep 30 deg).
 struct CollapseNumerics {
     double cfl = 0.3;
     double flip = 0.0;
+    int threads = 1;
+    double friction_angle_deg = 30.0;
 };
 
 /// Runs the collapse of aspect `aspect` (> 0) at `cells_per_length` cells per L0 (>= 4).
