@@ -24,8 +24,9 @@
 // (before volumetric averaging; with it, phi 30 at L0 / h = 16 / 32: 0.52 / 0.71, 1.44 / 1.75,
 // 3.41 / 4.37, 5.57 / 6.63, and 0.85 at 64 for a = 0.5: the same non-convergence.)
 // At 128 cells per L0 (phi 30): 1.10 at a = 0.5 and 2.55 at a = 1, while the deposit thicker
-// than a fifth of H0 stays put; the refinement study and what the tail is not are in
-// docs/column_collapse.md.
+// than a fifth of H0 stays put and the toe of the deposit's surface converges (the last test
+// below); the refinement study (bench/bench_collapse), what the tail is not and which law a
+// soil of which friction angle follows are in docs/column_collapse.md.
 #include "mpm/verification.hpp"
 
 #include <catch2/catch.hpp>
@@ -130,4 +131,27 @@ TEST_CASE("Surface toe: the deposit's surface line extended to zero thickness",
     CHECK(surface_toe(deposit, 0.01, 0.03) > 2.025 + 1e-3);
     // Fewer than two columns in the band: no line.
     CHECK(std::isnan(surface_toe(deposit, 0.0995, 0.1)));
+}
+
+// The body of the deposit converges where its tail does not (docs/column_collapse.md): at a = 2
+// the toe of the deposit's surface where it is 10-30 % of H0 thick reads 3.02, 2.88 and 3.07
+// at 16, 32 and 64 cells per L0 (Lube et al.: 3.02), while the farthest particle goes from
+// 3.41 to 4.37 and 4.95. The last check records that non-convergence: a fix for the tail
+// should fail it and update docs/column_collapse.md.
+TEST_CASE("Column collapse: the deposit's surface toe converges, the farthest particle does not",
+          "[mpm][verification]") {
+    using rockfall::mpm::verification::column_collapse;
+    using rockfall::mpm::verification::surface_toe;
+    const double a = 2.0;
+    const double h0 = a * 0.2;
+    const auto coarse = column_collapse(a, 16);
+    const auto fine = column_collapse(a, 32);
+    const double toe_coarse = surface_toe(coarse, 0.1 * h0, 0.3 * h0);
+    const double toe_fine = surface_toe(fine, 0.1 * h0, 0.3 * h0);
+    WARN("a = 2, L0 / h = 16 / 32: toe " << toe_coarse << " / " << toe_fine << ", farthest "
+                                         << coarse.runout << " / " << fine.runout << ", Lube "
+                                         << lube_runout(a));
+    CHECK(std::abs(toe_fine / toe_coarse - 1.0) < 0.08);
+    CHECK(std::abs(toe_fine / lube_runout(a) - 1.0) < 0.10);
+    CHECK(fine.runout / coarse.runout > 1.15);
 }
