@@ -12,15 +12,12 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <vector>
 
 namespace {
 
 using namespace rockfall::mpm::verification;
-
-constexpr double kLength = 0.2;  // L0 of the collapse, m
 
 struct Row {
     int cells = 0;
@@ -64,7 +61,7 @@ int main(int argc, char** argv) {
     std::printf("phi %.1f deg, cfl %.3f, flip %.2f, %d thread(s); runouts are (L - L0) / L0\n",
                 numerics.friction_angle_deg, numerics.cfl, numerics.flip, numerics.threads);
     for (const double a : aspects) {
-        const double height = a * kLength;
+        const double height = a * collapse_length;
         std::printf("\na = %g: Lube et al. %.2f, Lajeunesse et al. %.2f\n", a, lube_runout(a),
                     lajeunesse_runout(a));
         std::printf(
@@ -77,7 +74,7 @@ int main(int argc, char** argv) {
             const double run =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             const Row row{n, c.runout, surface_toe(c, 0.1 * height, 0.3 * height),
-                          (c.centre_of_mass[0] - 0.5 * kLength) / kLength};
+                          (c.centre_of_mass[0] - 0.5 * collapse_length) / collapse_length};
             std::printf(
                 "| %d | %zu | %.2f | %.2f / %.2f / %.2f | %.2f | %.3f | %.3f | %.2f | %.2f | "
                 "%.1f |%s\n",

@@ -109,7 +109,7 @@ report::VvTable collapse_table(report::VvSection& section) {
                                               report::Marker::square);
     for (const double a : {0.5, 1.0, 2.0, 3.0}) {
         const verification::ColumnCollapse c = verification::column_collapse(a, 16);
-        const double height = 0.2 * a;
+        const double height = verification::collapse_length * a;
         const double toe_runout = verification::surface_toe(c, 0.1 * height, 0.3 * height);
         if (std::isfinite(toe_runout)) {  // NaN: too few columns in the band to fit
             toe.x.push_back(a);

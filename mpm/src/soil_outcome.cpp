@@ -30,15 +30,6 @@ ParticleFrame make_frame(const Particles<Dim>& p, double time) {
 }
 
 template <int Dim>
-double kinetic_energy(const Particles<Dim>& p) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        sum += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
-    }
-    return sum;
-}
-
-template <int Dim>
 double front(const Particles<Dim>& p) {
     double x = -std::numeric_limits<double>::infinity();
     for (const Vec<Dim>& position : p.position) {
@@ -149,7 +140,7 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
             outcome.sample_time.push_back(next_sample * ds);
             outcome.centre_of_mass.push_back(com);
             outcome.front_x.push_back(front(solver.particles()) + 0.5 * model.particle_spacing);
-            outcome.kinetic_energy.push_back(kinetic_energy(solver.particles()));
+            outcome.kinetic_energy.push_back(solver.particles().kinetic_energy());
             ++next_sample;
             if (!com.allFinite() || !std::isfinite(outcome.kinetic_energy.back())) {
                 outcome.status = SoilStatus::non_finite;

@@ -20,11 +20,30 @@ namespace rockfall::mpm::verification {
 namespace {
 
 constexpr double g = 9.81;  // m/s2
-// Column length L0 of the collapse, m, and the density of its soil and the sliding layer, kg/m3.
-constexpr double kCollapseLength = 0.2;
+// Density of the collapse's soil and of the sliding layer, kg/m3.
 constexpr double kSoilDensity = 1600.0;
 
 double to_radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+// Running sums of an ordinary least-squares line y = intercept + slope x (the cases' data are
+// a few hundred to a few thousand points of like magnitude, so the uncentred sums are enough).
+struct LineSums {
+    double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+    void add(double x, double y) {
+        n += 1.0;
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+    }
+    /// NaN with fewer than two distinct x.
+    double slope() const {
+        const double d = n * sxx - sx * sx;
+        return n >= 2.0 && d > 0.0 ? (n * sxy - sx * sy) / d
+                                   : std::numeric_limits<double>::quiet_NaN();
+    }
+    double intercept() const { return (sy - slope() * sx) / n; }
+};
 
 }  // namespace
 
@@ -211,7 +230,7 @@ ColumnCollapse column_collapse(double aspect, int cells_per_length,
     if (!(aspect > 0.0) || cells_per_length < 4) {
         throw std::invalid_argument("column_collapse: aspect must be > 0 and cells >= 4");
     }
-    const double length = kCollapseLength;
+    const double length = collapse_length;
     const double height = aspect * length;
     const double h = length / cells_per_length;
     Particles<2> column;
@@ -243,19 +262,13 @@ ColumnCollapse column_collapse(double aspect, int cells_per_length,
         result.clamped_steps += r.clamped_particles > 0 ? 1 : 0;
         if (early && solver.time() >= time_scale) {
             early = false;
-            for (std::size_t p = 0; p < particles.size(); ++p) {
-                result.early_kinetic_energy +=
-                    0.5 * particles.mass[p] * particles.velocity[p].squaredNorm();
-            }
+            result.early_kinetic_energy = particles.kinetic_energy();
         }
         if (solver.time() > 2.0 * time_scale && r.max_speed < 0.005 * std::sqrt(g * length)) break;
     }
     double front = 0.0;
-    for (std::size_t p = 0; p < particles.size(); ++p) {
-        front = std::max(front, particles.position[p][0]);
-        result.centre_of_mass += particles.mass[p] * particles.position[p];
-    }
-    result.centre_of_mass /= particles.total_mass();
+    for (const Vec<2>& x : particles.position) front = std::max(front, x[0]);
+    result.centre_of_mass = particles.centre_of_mass();
     result.runout = (front + h / 4.0 - length) / length;
     result.time = solver.time();
     result.deposit = particles.position;
@@ -268,7 +281,7 @@ namespace {
 // The deposit's thickness per h-wide grid column from x = 0 (m): its particles' mass over
 // (1600 kg/m3 h). Particles behind the back wall are left out.
 std::vector<double> column_thickness(const ColumnCollapse& collapse) {
-    const double h = kCollapseLength / collapse.cells_per_length;
+    const double h = collapse_length / collapse.cells_per_length;
     std::vector<double> thickness;
     for (std::size_t i = 0; i < collapse.deposit.size(); ++i) {
         const double x = collapse.deposit[i][0];
@@ -283,37 +296,28 @@ std::vector<double> column_thickness(const ColumnCollapse& collapse) {
 }  // namespace
 
 double deposit_front(const ColumnCollapse& collapse, double thickness) {
-    const double h = kCollapseLength / collapse.cells_per_length;
+    const double h = collapse_length / collapse.cells_per_length;
     const std::vector<double> column = column_thickness(collapse);
     double front = 0.0;
     for (std::size_t c = 0; c < column.size(); ++c) {
         if (column[c] > thickness) front = static_cast<double>(c + 1) * h;
     }
-    return (front - kCollapseLength) / kCollapseLength;
+    return (front - collapse_length) / collapse_length;
 }
 
 double surface_toe(const ColumnCollapse& collapse, double lower, double upper) {
-    const double h = kCollapseLength / collapse.cells_per_length;
+    const double h = collapse_length / collapse.cells_per_length;
     const std::vector<double> column = column_thickness(collapse);
     const auto thickest = std::max_element(column.begin(), column.end()) - column.begin();
     // Least-squares line thickness = t0 + slope x through the columns' centres.
-    double n = 0.0, sx = 0.0, st = 0.0, sxx = 0.0, sxt = 0.0;
+    LineSums line;
     for (auto c = thickest + 1; c < static_cast<std::ptrdiff_t>(column.size()); ++c) {
         const double t = column[static_cast<std::size_t>(c)];
-        if (t < lower || t > upper) continue;
-        const double x = (static_cast<double>(c) + 0.5) * h;
-        n += 1.0;
-        sx += x;
-        st += t;
-        sxx += x * x;
-        sxt += x * t;
+        if (t >= lower && t <= upper) line.add((static_cast<double>(c) + 0.5) * h, t);
     }
-    const double denominator = n * sxx - sx * sx;
-    if (n < 2.0 || !(denominator > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-    const double slope = (n * sxt - sx * st) / denominator;
+    const double slope = line.slope();
     if (!(slope < 0.0)) return std::numeric_limits<double>::quiet_NaN();
-    const double intercept = (st - slope * sx) / n;
-    return (-intercept / slope - kCollapseLength) / kCollapseLength;
+    return (-line.intercept() / slope - collapse_length) / collapse_length;
 }
 
 BlockSlide sliding_block(double angle_deg, double friction_angle_deg, double duration,
@@ -381,20 +385,15 @@ LayerSlide sliding_layer(double cell_size, double thickness, double friction_ang
     set_geostatic_stress<2>(solver.particles(), thickness, g, kSoilK0);
     const double mass = solver.particles().total_mass();
     // Least-squares line v = v0 - a t through the mean velocity of every step.
-    double st = 0.0, sv = 0.0, stt = 0.0, stv = 0.0, n = 0.0;
+    LineSums line;
     while (solver.time() < 1.0) {
         solver.step(solver.stable_time_step());
         const double v = solver.particles().momentum()[0] / mass;
         if (v < 0.5 * v0) break;
-        const double t = solver.time();
-        st += t;
-        sv += v;
-        stt += t * t;
-        stv += t * v;
-        n += 1.0;
+        line.add(solver.time(), v);
     }
     LayerSlide result;
-    result.fitted_deceleration = -(n * stv - st * sv) / (n * stt - st * st);
+    result.fitted_deceleration = -line.slope();
     result.expected_deceleration = mu * g;
     return result;
 }

@@ -143,7 +143,7 @@ TEST_CASE("Column collapse: the deposit's surface toe converges, the farthest pa
     using rockfall::mpm::verification::column_collapse;
     using rockfall::mpm::verification::surface_toe;
     const double a = 2.0;
-    const double h0 = a * 0.2;
+    const double h0 = a * rockfall::mpm::verification::collapse_length;
     const auto coarse = column_collapse(a, 16);
     const auto fine = column_collapse(a, 32);
     const double toe_coarse = surface_toe(coarse, 0.1 * h0, 0.3 * h0);

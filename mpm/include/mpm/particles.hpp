@@ -60,6 +60,15 @@ struct Particles {
         return sum;
     }
 
+    /// Total kinetic energy, J (J/m in 2D).
+    double kinetic_energy() const {
+        double sum = 0.0;
+        for (std::size_t p = 0; p < size(); ++p) {
+            sum += 0.5 * mass[p] * velocity[p].squaredNorm();
+        }
+        return sum;
+    }
+
     /// Centre of mass, m (the particles must not be empty).
     Vec<Dim> centre_of_mass() const {
         Vec<Dim> sum = Vec<Dim>::Zero();

@@ -71,6 +71,9 @@ ColumnForces column_at_rest(double nu, double cell, double width, double offset,
 double lube_runout(double aspect);
 double lajeunesse_runout(double aspect);
 
+/// The collapse's column length L0, m.
+inline constexpr double collapse_length = 0.2;
+
 /// A planar column collapse: L0 = 0.2 m against a back wall, H0 = a L0, Drucker-Prager
 /// (phi 30 deg plane-strain match, no cohesion, E 1 MPa, nu 0.3, 1600 kg/m3), geostatic K0
 /// start, basal and wall friction 30 deg, 4 particles per cell, run until at rest (or 20
