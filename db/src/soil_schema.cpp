@@ -25,10 +25,10 @@ CREATE TABLE soil_run (
     runtime_s REAL,                         -- wall-clock time of the run
     wall_distance_from_toe_m REAL,          -- to the wall's front face; NULL without a wall
     sample_interval_s REAL,
-    filter_window_s REAL,                   -- centred moving average of the sampled load
-    peak_force_x_N REAL,                    -- largest mean load over a sample interval
+    filter_window_s REAL,                   -- width of the filtered load's moving average
+    peak_force_x_N REAL,                    -- largest mean over any sample_interval window
     peak_force_x_N_per_m REAL,
-    peak_time_s REAL,                       -- end of that interval
+    peak_time_s REAL,                       -- centre of that window
     peak_force_x_filtered_N REAL,
     peak_force_x_filtered_N_per_m REAL,
     peak_force_x_step_N REAL,               -- largest load of a single step

@@ -1,5 +1,6 @@
 #include "soil_model.hpp"
 
+#include "mpm/load_window.hpp"
 #include "mpm/soil.hpp"
 
 #include <algorithm>
@@ -160,28 +161,26 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
         outcome.wall_load.push_back(impulse_bins[k] / ds);
         outcome.wall_force.push_back(outcome.wall_load.back().x());
     }
-    const int half = static_cast<int>(std::lround(0.5 * output.filter_window / ds));
-    outcome.wall_load_filtered.assign(recorded, Vec3::Zero());
-    for (int axis = 0; axis < 3; ++axis) {
-        std::vector<double> component(recorded);
+    // Peaks over every window position, from the step history (mpm/load_window.hpp); the
+    // filtered history is the centred mean over exactly filter_window around each sample's
+    // middle.
+    const StepHistory<double> force(outcome.step_time, outcome.step_wall_force, 0.0);
+    const WindowPeak sampled = peak_window_mean(force, ds);
+    outcome.peak_wall_force = sampled.value;
+    outcome.peak_wall_force_time = sampled.centre;
+    if (output.filter_window > 0.0) {
+        const StepHistory<Vec3> load(outcome.step_time, outcome.step_wall_load, Vec3::Zero());
         for (std::size_t k = 0; k < recorded; ++k) {
-            component[k] = outcome.wall_load[k][axis];
+            const double middle = outcome.sample_time[k] - 0.5 * ds;
+            outcome.wall_load_filtered.push_back(load.window_mean(middle, output.filter_window));
         }
-        component = moving_average(component, 2 * half + 1);
-        for (std::size_t k = 0; k < recorded; ++k) {
-            outcome.wall_load_filtered[k][axis] = component[k];
-        }
+        outcome.peak_wall_force_filtered = peak_window_mean(force, output.filter_window).value;
+    } else {
+        outcome.wall_load_filtered = outcome.wall_load;
+        outcome.peak_wall_force_filtered = outcome.peak_wall_force;
     }
-    for (std::size_t k = 0; k < recorded; ++k) {
-        outcome.wall_force_filtered.push_back(outcome.wall_load_filtered[k].x());
-    }
-    for (std::size_t k = 0; k < recorded; ++k) {
-        if (outcome.wall_force[k] > outcome.peak_wall_force) {
-            outcome.peak_wall_force = outcome.wall_force[k];
-            outcome.peak_wall_force_time = outcome.sample_time[k];
-        }
-        outcome.peak_wall_force_filtered =
-            std::max(outcome.peak_wall_force_filtered, outcome.wall_force_filtered[k]);
+    for (const Vec3& load : outcome.wall_load_filtered) {
+        outcome.wall_force_filtered.push_back(load.x());
     }
     if (outcome.status == SoilStatus::non_finite) {
         // Positions that blew up have no deposit.
@@ -206,22 +205,6 @@ const char* status_name(SoilStatus status) {
             return "non_finite";
     }
     return "unknown";
-}
-
-std::vector<double> moving_average(const std::vector<double>& values, int window_samples) {
-    const int n = static_cast<int>(values.size());
-    const int half = std::max(0, window_samples / 2);
-    std::vector<double> out(values.size(), 0.0);
-    for (int i = 0; i < n; ++i) {
-        const int lo = std::max(0, i - half);
-        const int hi = std::min(n - 1, i + half);
-        double sum = 0.0;
-        for (int j = lo; j <= hi; ++j) {
-            sum += values[static_cast<std::size_t>(j)];
-        }
-        out[static_cast<std::size_t>(i)] = sum / (hi - lo + 1);
-    }
-    return out;
 }
 
 SoilOutcome run_soil(const SoilScenario& scenario, const FrameCallback& on_frame) {

@@ -104,9 +104,9 @@ void print_refinement(std::ostream& out, const mpm::RefinementStudy& study,
     out << "refinement study of " << context.scenario << ": "
         << (u.per_metre ? "2D plane strain, loads per metre of width" : "3D") << ", "
         << fmt("%g s", context.duration) << " of flow; steady load = mean over the last "
-        << fmt("%g s", context.steady_window) << "; peak = largest mean over a sample interval, "
-        << "filtered = largest centred moving average over " << fmt("%g s", context.filter_window)
-        << '\n';
+        << fmt("%g s", context.steady_window)
+        << "; peak = largest mean over any window of one sample interval, "
+        << "filtered = over any window of " << fmt("%g s", context.filter_window) << '\n';
     const std::string load = std::string("(") + u.text + ")";
     char line[256];
     std::snprintf(line, sizeof line, "%10s %9s %8s %12s %10s %16s %13s %10s", "cell (m)",

@@ -88,10 +88,12 @@ void print_soil_summary(std::ostream& out, const db::SoilRunRecord& r, const std
         out << "wall load (normal to the wall, " << fmt("%.2f m", r.wall_distance_from_toe)
             << " past the toe), " << u.force << ":\n";
         out << "  peak " << fmt("%.1f ", r.peak_force) << u.force << " at "
-            << fmt("%.3f s", r.peak_time) << " (mean over each " << fmt("%g s", r.sample_interval)
-            << " sample)\n";
+            << fmt("%.3f s", r.peak_time) << " (largest mean over any "
+            << fmt("%g s", r.sample_interval) << " window)\n";
         out << "  peak filtered " << fmt("%.1f ", r.peak_force_filtered) << u.force
-            << " (centred moving average over " << fmt("%g s", r.filter_window) << ")\n";
+            << (r.filter_window > 0.0
+                    ? " (largest mean over any " + fmt("%g s", r.filter_window) + " window)\n"
+                    : " (no filter: the peak)\n");
         out << "  peak raw " << fmt("%.1f ", r.peak_force_step) << u.force << " (single step)\n";
         out << "  total impulse " << fmt("%.1f ", r.impulse) << u.impulse << '\n';
     } else {

@@ -1,5 +1,6 @@
 #include "helpers.hpp"
 
+#include "mpm/load_window.hpp"
 #include "mpm/soil.hpp"
 #include "mpm/vtk.hpp"
 #include "shapes/slope.hpp"
@@ -56,18 +57,36 @@ TEST_CASE("Soil scenario validation lists every problem", "[mpm][soil]") {
     }
 }
 
-TEST_CASE("Moving average keeps constants and spreads a spike over the window", "[mpm][soil]") {
-    const std::vector<double> flat(9, 2.5);
-    for (const double v : moving_average(flat, 5)) {
-        CHECK_THAT(v, WithinRel(2.5, 1e-15));
-    }
-    std::vector<double> spike(9, 0.0);
-    spike[4] = 1.0;
-    const std::vector<double> smooth = moving_average(spike, 5);
-    CHECK_THAT(smooth[2], WithinRel(0.2, 1e-15));
-    CHECK_THAT(smooth[6], WithinRel(0.2, 1e-15));
-    CHECK(smooth[1] == 0.0);
-    CHECK_THAT(std::accumulate(smooth.begin(), smooth.end(), 0.0), WithinRel(1.0, 1e-15));
+TEST_CASE("Window means of a step history are exact at any width and position", "[mpm][soil]") {
+    // Steps of 0.1 s: 0 until 0.3 s, then a 0.1 s impact of 10, then 2 to the end (1.0 s).
+    const std::vector<double> ends{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
+    const std::vector<double> load{0, 0, 0, 10, 2, 2, 2, 2, 2, 2};
+    const StepHistory<double> h(ends, load, 0.0);
+    CHECK(h.end() == 1.0);
+    CHECK_THAT(h.integral(0.35), WithinAbs(0.5, 1e-12));
+    CHECK_THAT(h.integral(2.0), WithinAbs(2.2, 1e-12));
+    // Clipped at the start: [0, 0.35] holds 0.5 over 0.35 s.
+    CHECK_THAT(h.window_mean(0.1, 0.5), WithinRel(0.5 / 0.35, 1e-12));
+    CHECK_THAT(h.window_mean(0.9, 0.2), WithinRel(2.0, 1e-12));
+    // A 0.1 s window finds the impact whatever a sample grid would do: a grid with a boundary
+    // at 0.35 s reads 6 in both halves.
+    const WindowPeak narrow = peak_window_mean(h, 0.1);
+    CHECK_THAT(narrow.value, WithinRel(10.0, 1e-12));
+    CHECK_THAT(narrow.centre, WithinAbs(0.35, 1e-12));
+    // 0.25 s: the whole impact plus 0.15 s of the rest, (1 + 0.3) / 0.25 = 5.2.
+    CHECK_THAT(peak_window_mean(h, 0.25).value, WithinRel(5.2, 1e-12));
+    // Longer than the run: its mean.
+    const WindowPeak whole = peak_window_mean(h, 3.0);
+    CHECK_THAT(whole.value, WithinRel(2.2, 1e-12));
+    CHECK_THAT(whole.centre, WithinAbs(0.5, 1e-12));
+    // Unequal steps, vectors.
+    const std::vector<double> uneven{0.05, 0.3, 0.31};
+    const std::vector<Vec3> loads{Vec3(1, 0, 0), Vec3(0, 4, 0), Vec3(0, 0, 100)};
+    const StepHistory<Vec3> v(uneven, loads, Vec3::Zero());
+    CHECK((v.window_mean(0.155, 0.31) - Vec3(0.05, 1.0, 1.0) / 0.31).norm() < 1e-12);
+    CHECK_THROWS_AS(StepHistory<double>({0.1, 0.1}, {1.0, 2.0}, 0.0), std::invalid_argument);
+    CHECK_THROWS_AS(StepHistory<double>({0.1}, {1.0, 2.0}, 0.0), std::invalid_argument);
+    CHECK_THROWS_AS(peak_window_mean(h, 0.0), std::invalid_argument);
 }
 
 TEST_CASE("Quick 2D soil flow loads the wall and heaps against it", "[mpm][soil]") {
@@ -87,8 +106,13 @@ TEST_CASE("Quick 2D soil flow loads the wall and heaps against it", "[mpm][soil]
     const double sampled =
         std::accumulate(o.wall_force.begin(), o.wall_force.end(), 0.0) * s.output.sample_interval;
     CHECK_THAT(sampled, WithinRel(o.wall_impulse, 1e-9));
+    // The peaks are taken over every window position: at least what the sample grid reads.
     CHECK(o.peak_wall_force > 0.0);
+    CHECK(o.peak_wall_force >= *std::max_element(o.wall_force.begin(), o.wall_force.end()));
     CHECK(o.peak_wall_force_filtered <= o.peak_wall_force);
+    const double interior_filtered =
+        *std::max_element(o.wall_force_filtered.begin() + 5, o.wall_force_filtered.end() - 5);
+    CHECK(o.peak_wall_force_filtered >= interior_filtered);
     // The load vectors: x is the normal load above, nothing acts across a plane-strain section,
     // and the fixed (no-slip) wall also takes shear along its face.
     REQUIRE(o.wall_load.size() == o.wall_force.size());

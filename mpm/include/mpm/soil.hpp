@@ -116,10 +116,10 @@ struct SoilNumerics {
 struct SoilOutput {
     /// Simulated time, s (> 0); the seed flow takes about 6 s.
     double duration = 8.0;
-    /// Interval of the sampled histories, s (> 0).
+    /// Interval of the sampled histories, s (> 0); also the window of the peak wall load.
     double sample_interval = 0.01;
-    /// Width of the centred moving-average filter applied to the sampled wall load, s (>= 0;
-    /// 0 = no filtering).
+    /// Width of the centred moving average of the wall load (the filtered history and peak),
+    /// s (>= 0; 0 = no filtering).
     double filter_window = 0.05;
     /// Interval between particle frames passed to the frame callback, s (> 0).
     double frame_interval = 0.1;
@@ -195,7 +195,8 @@ struct SoilOutcome {
     std::vector<double> sample_time;
     /// Wall load averaged over each sample interval (wall impulse / interval), N.
     std::vector<double> wall_force;
-    /// wall_force smoothed by a centred moving average of output.filter_window, N.
+    /// Wall load averaged over exactly output.filter_window centred on the middle of each sample
+    /// interval (from the step history, shorter at the ends of the run), N.
     std::vector<double> wall_force_filtered;
     /// The wall load as a vector (scene frame: x normal to the wall as wall_force, y across, z
     /// up; y is 0 in 2D), N: of every step, averaged over each sample interval, and filtered.
@@ -209,11 +210,14 @@ struct SoilOutcome {
     std::vector<double> front_x;
     /// Kinetic energy at each sample time, J (J/m in 2D).
     std::vector<double> kinetic_energy;
-    /// Peak of wall_force, N, and its time, s.
+    /// Peak wall load: the largest mean over any window of output.sample_interval within the
+    /// run, every position tried (exact for the step history; mpm/load_window.hpp), N. At least
+    /// the largest of wall_force, which only tries the sample grid's positions.
     double peak_wall_force = 0.0;
-    /// Time of the peak of wall_force, s.
+    /// Centre of the window of peak_wall_force, s.
     double peak_wall_force_time = 0.0;
-    /// Peak of wall_force_filtered, N.
+    /// Filtered peak: the largest mean over any window of output.filter_window within the run,
+    /// N (peak_wall_force if filter_window is 0).
     double peak_wall_force_filtered = 0.0;
     /// Total impulse on the wall, N s.
     double wall_impulse = 0.0;
@@ -249,9 +253,5 @@ using FrameCallback = std::function<void(const ParticleFrame&)>;
 /// Validates the scenario and runs it. Numerical trouble is reported in the outcome's status;
 /// invalid input throws std::invalid_argument.
 SoilOutcome run_soil(const SoilScenario& scenario, const FrameCallback& on_frame = {});
-
-/// Centred moving average of uniformly sampled values over `window_samples` samples (odd;
-/// shorter at the ends, where it averages what exists). Preserves the sum of constant signals.
-std::vector<double> moving_average(const std::vector<double>& values, int window_samples);
 
 }  // namespace rockfall::mpm
