@@ -4,8 +4,8 @@
 /// is piecewise linear: the mean over any window follows exactly from the cumulative impulse,
 /// whatever the window's width or position. The peak over every window position is what a
 /// logger averaging over that width sees at its worst phase; taking it only on a fixed sample
-/// grid makes a short impact's peak depend on where the grid's boundaries fall (up to 15 % for
-/// the 2D seed flow at 0.025 m cells, docs/soil.md).
+/// grid makes a short impact's peak depend on where the grid's boundaries fall (up to 17 % for
+/// the 2D seed flow at 0.025 m cells, docs/soil_first_arrival.md).
 
 #include <algorithm>
 #include <stdexcept>
