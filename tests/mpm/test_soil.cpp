@@ -113,6 +113,15 @@ TEST_CASE("Quick 2D soil flow loads the wall and heaps against it", "[mpm][soil]
     const double interior_filtered =
         *std::max_element(o.wall_force_filtered.begin() + 5, o.wall_force_filtered.end() - 5);
     CHECK(o.peak_wall_force_filtered >= interior_filtered);
+    // The filter is 0.05 s wide: centred on a sample's middle it spans that sample and two on
+    // either side (a rounding of the half-width once made it seven samples).
+    REQUIRE(s.output.filter_window == 0.05);
+    for (std::size_t k = 2; k + 2 < o.wall_force.size(); ++k) {
+        const double five = (o.wall_force[k - 2] + o.wall_force[k - 1] + o.wall_force[k] +
+                             o.wall_force[k + 1] + o.wall_force[k + 2]) /
+                            5.0;
+        CHECK_THAT(o.wall_force_filtered[k], WithinAbs(five, 1e-9 * o.peak_wall_force));
+    }
     // The load vectors: x is the normal load above, nothing acts across a plane-strain section,
     // and the fixed (no-slip) wall also takes shear along its face.
     REQUIRE(o.wall_load.size() == o.wall_force.size());
