@@ -87,6 +87,9 @@ TEST_CASE("Window means of a step history are exact at any width and position", 
     CHECK_THROWS_AS(StepHistory<double>({0.1, 0.1}, {1.0, 2.0}, 0.0), std::invalid_argument);
     CHECK_THROWS_AS(StepHistory<double>({0.1}, {1.0, 2.0}, 0.0), std::invalid_argument);
     CHECK_THROWS_AS(peak_window_mean(h, 0.0), std::invalid_argument);
+    // A step that blew up: the windows before it still count.
+    const StepHistory<double> blown({0.1, 0.2, 0.3}, {4.0, 1.0, std::nan("")}, 0.0);
+    CHECK_THAT(peak_window_mean(blown, 0.1).value, WithinRel(4.0, 1e-12));
 }
 
 TEST_CASE("Quick 2D soil flow loads the wall and heaps against it", "[mpm][soil]") {

@@ -8,6 +8,7 @@
 /// the 2D seed flow at 0.025 m cells, docs/soil_first_arrival.md).
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -84,6 +85,7 @@ struct WindowPeak {
 /// mean over [s, s + width] is piecewise linear in s with breaks where an edge crosses a step
 /// boundary, so its maximum has an edge on a boundary: those positions are all tried. A run
 /// shorter than the window gives its overall mean (centre at half the run); no steps give 0.
+/// Windows whose mean is not finite (a run that blew up) are skipped.
 inline WindowPeak peak_window_mean(const StepHistory<double>& history, double width) {
     if (!(width > 0.0)) {
         throw std::invalid_argument("peak_window_mean: the window must be > 0 s");
@@ -99,7 +101,7 @@ inline WindowPeak peak_window_mean(const StepHistory<double>& history, double wi
     auto consider = [&](double start) {
         start = std::clamp(start, 0.0, end - width);
         const double mean = (history.integral(start + width) - history.integral(start)) / width;
-        if (first || mean > peak.value) {
+        if (std::isfinite(mean) && (first || mean > peak.value)) {
             peak.value = mean;
             peak.centre = start + 0.5 * width;
             first = false;
