@@ -31,15 +31,6 @@ ParticleFrame make_frame(const Particles<Dim>& p, double time) {
 }
 
 template <int Dim>
-double front(const Particles<Dim>& p) {
-    double x = -std::numeric_limits<double>::infinity();
-    for (const Vec<Dim>& position : p.position) {
-        x = std::max(x, position[0]);
-    }
-    return x;
-}
-
-template <int Dim>
 SoilDeposit deposit_of(const Particles<Dim>& p, const shapes::Slope& slope, double cell,
                        double half_spacing) {
     SoilDeposit deposit;
@@ -66,20 +57,6 @@ SoilDeposit deposit_of(const Particles<Dim>& p, const shapes::Slope& slope, doub
     return deposit;
 }
 
-// Adds the impulse of a step spanning [t0, t1] to the sample bins it overlaps, in proportion
-// to the overlap (bin k covers [k ds, (k + 1) ds]).
-void bin_impulse(std::vector<Vec3>& bins, double ds, double t0, double t1, const Vec3& impulse) {
-    const double dt = t1 - t0;
-    const int last = static_cast<int>(bins.size()) - 1;
-    for (int k = std::clamp(static_cast<int>(t0 / ds), 0, last);
-         k <= std::clamp(static_cast<int>(t1 / ds), 0, last); ++k) {
-        const double overlap = std::min(t1, (k + 1) * ds) - std::max(t0, k * ds);
-        if (overlap > 0.0) {
-            bins[static_cast<std::size_t>(k)] += impulse * overlap / dt;
-        }
-    }
-}
-
 template <int Dim>
 SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
     detail::SoilModel<Dim> model = detail::build_soil_model<Dim>(scenario);
@@ -95,7 +72,6 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
     const double duration = output.duration;
     const double ds = output.sample_interval;
     const int samples = std::max(1, static_cast<int>(std::ceil(duration / ds - 1e-9)));
-    std::vector<Vec3> impulse_bins(static_cast<std::size_t>(samples), Vec3::Zero());
     int next_sample = 1;
     double next_frame = 0.0;
     auto emit_frames = [&] {
@@ -130,7 +106,6 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
         outcome.step_wall_load.push_back(impulse / dt);
         outcome.step_wall_force.push_back(impulse.x() / dt);
         outcome.wall_impulse += impulse.x();
-        bin_impulse(impulse_bins, ds, t0, t1, impulse);
         if (report.clamped_particles > 0 && outcome.status == SoilStatus::completed) {
             outcome.status = SoilStatus::left_domain;
             outcome.message = "particles reached the grid's edge at t = " + std::to_string(t1) +
@@ -140,7 +115,7 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
             const Vec3 com = to_scene<Dim>(solver.particles().centre_of_mass());
             outcome.sample_time.push_back(next_sample * ds);
             outcome.centre_of_mass.push_back(com);
-            outcome.front_x.push_back(front(solver.particles()) + 0.5 * model.particle_spacing);
+            outcome.front_x.push_back(solver.particles().front() + 0.5 * model.particle_spacing);
             outcome.kinetic_energy.push_back(solver.particles().kinetic_energy());
             ++next_sample;
             if (!com.allFinite() || !std::isfinite(outcome.kinetic_energy.back())) {
@@ -156,32 +131,28 @@ SoilOutcome run(const SoilScenario& scenario, const FrameCallback& on_frame) {
     outcome.steps = solver.step_count();
     outcome.final_wall_displacement = solver.spring_displacement();
 
+    // Sampled and filtered histories and their peaks, all from the step history
+    // (mpm/load_window.hpp): sample k is the mean over its interval; the filtered history is the
+    // mean over exactly filter_window centred on each sample's middle; the peaks try every
+    // window position.
     const std::size_t recorded = outcome.sample_time.size();
+    const StepHistory<Vec3> load(outcome.step_time, outcome.step_wall_load, Vec3::Zero());
     for (std::size_t k = 0; k < recorded; ++k) {
-        outcome.wall_load.push_back(impulse_bins[k] / ds);
+        const double middle = outcome.sample_time[k] - 0.5 * ds;
+        outcome.wall_load.push_back(load.window_mean(middle, ds));
         outcome.wall_force.push_back(outcome.wall_load.back().x());
+        outcome.wall_load_filtered.push_back(output.filter_window > 0.0
+                                                 ? load.window_mean(middle, output.filter_window)
+                                                 : outcome.wall_load.back());
+        outcome.wall_force_filtered.push_back(outcome.wall_load_filtered.back().x());
     }
-    // Peaks over every window position, from the step history (mpm/load_window.hpp); the
-    // filtered history is the centred mean over exactly filter_window around each sample's
-    // middle.
     const StepHistory<double> force(outcome.step_time, outcome.step_wall_force, 0.0);
     const WindowPeak sampled = peak_window_mean(force, ds);
     outcome.peak_wall_force = sampled.value;
     outcome.peak_wall_force_time = sampled.centre;
-    if (output.filter_window > 0.0) {
-        const StepHistory<Vec3> load(outcome.step_time, outcome.step_wall_load, Vec3::Zero());
-        for (std::size_t k = 0; k < recorded; ++k) {
-            const double middle = outcome.sample_time[k] - 0.5 * ds;
-            outcome.wall_load_filtered.push_back(load.window_mean(middle, output.filter_window));
-        }
-        outcome.peak_wall_force_filtered = peak_window_mean(force, output.filter_window).value;
-    } else {
-        outcome.wall_load_filtered = outcome.wall_load;
-        outcome.peak_wall_force_filtered = outcome.peak_wall_force;
-    }
-    for (const Vec3& load : outcome.wall_load_filtered) {
-        outcome.wall_force_filtered.push_back(load.x());
-    }
+    outcome.peak_wall_force_filtered = output.filter_window > 0.0
+                                           ? peak_window_mean(force, output.filter_window).value
+                                           : sampled.value;
     if (outcome.status == SoilStatus::non_finite) {
         // Positions that blew up have no deposit.
         outcome.deposit.runout_x = std::numeric_limits<double>::quiet_NaN();

@@ -266,8 +266,7 @@ ColumnCollapse column_collapse(double aspect, int cells_per_length,
         }
         if (solver.time() > 2.0 * time_scale && r.max_speed < 0.005 * std::sqrt(g * length)) break;
     }
-    double front = 0.0;
-    for (const Vec<2>& x : particles.position) front = std::max(front, x[0]);
+    const double front = particles.front();
     result.centre_of_mass = particles.centre_of_mass();
     result.runout = (front + h / 4.0 - length) / length;
     result.time = solver.time();

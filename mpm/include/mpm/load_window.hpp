@@ -62,7 +62,7 @@ class StepHistory {
         const double a = std::max(0.0, centre - 0.5 * width);
         const double b = std::min(end(), centre + 0.5 * width);
         if (!(b > a)) {
-            return integral_.front() * 0.0;
+            return integral_.front();  // the zero
         }
         return (integral(b) - integral(a)) * (1.0 / (b - a));
     }

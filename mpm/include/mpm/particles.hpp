@@ -3,7 +3,9 @@
 
 #include "mpm/math.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace rockfall::mpm {
@@ -67,6 +69,16 @@ struct Particles {
             sum += 0.5 * mass[p] * velocity[p].squaredNorm();
         }
         return sum;
+    }
+
+    /// Front: the largest x, m (downslope in the soil flow, along the collapse); -infinity
+    /// without particles.
+    double front() const {
+        double x = -std::numeric_limits<double>::infinity();
+        for (const Vec<Dim>& p : position) {
+            x = std::max(x, p[0]);
+        }
+        return x;
     }
 
     /// Centre of mass, m (the particles must not be empty).
